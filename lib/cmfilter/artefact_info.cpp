@@ -1,0 +1,67 @@
+#include "cmfilter/artefact_info.h"
+
+#include "cmfilter/gaussian_color_table_file.h"
+#include "cmfilter/image_reading.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <cstdio>
+
+namespace cmfilter {
+
+namespace {
+
+std::string describe_kind(const std::string& kind, int width, int height)
+{
+    if (kind == kGaussianColorTableKind)
+        return "prefiltered colour-map table T(v, sigma) = (C0 * N(0, sigma^2))(v) (Heitz et al. "
+               "2013, eq. 10): " + std::to_string(width) + " value nodes x " +
+               std::to_string(height) + " sigma nodes, scene-linear RGB";
+    return "cmfilter artefact of an unknown kind (made by a newer cmfilter?)";
+}
+
+std::string format_value(const OIIO::ParamValue& p)
+{
+    const OIIO::TypeDesc t = p.type();
+    if (t == OIIO::TypeDesc::DOUBLE || t == OIIO::TypeDesc::FLOAT) {
+        char buf[64];
+        std::snprintf(buf, sizeof buf, "%.17g",
+                      t == OIIO::TypeDesc::DOUBLE ? p.get<double>() : static_cast<double>(p.get<float>()));
+        return buf;
+    }
+    return p.get_string();
+}
+
+}  // namespace
+
+Expected<ArtefactInfo> read_artefact_info(const std::string& path)
+{
+    // read_image gives the Io/BadInput distinction for missing and non-image files.
+    auto in = OIIO::ImageInput::open(path);
+    if (!in) {
+        auto img = read_image(path);
+        if (!img) return img.error();
+        return bad_input("'" + path + "' is not an image OpenImageIO can read");
+    }
+    const OIIO::ImageSpec& spec = in->spec();
+    ArtefactInfo info;
+    info.path = path;
+    info.format = in->format_name();
+    info.width = spec.width;
+    info.height = spec.height;
+    info.channels = spec.nchannels;
+    for (const auto& p : spec.extra_attribs) {
+        const std::string name = p.name().string();
+        if (name.rfind("cmfilter:", 0) != 0) continue;
+        const std::string key = name.substr(9);
+        if (key == "kind") info.kind = p.get_string();
+        info.parameters.emplace_back(key, format_value(p));
+    }
+    if (info.kind.empty())
+        return bad_input("'" + path + "' is an image but not a cmfilter artefact (no cmfilter:kind "
+                         "metadata)");
+    info.description = describe_kind(info.kind, info.width, info.height);
+    return info;
+}
+
+}  // namespace cmfilter

@@ -1,0 +1,142 @@
+#include "cmfilter/color_map_loading.h"
+
+#include "cmfilter/image_reading.h"
+#include "cmfilter/sha256.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace cmfilter {
+
+namespace {
+
+struct ColorSpaceChoice {
+    std::string name;  // as given, before resolution
+    std::string rule;
+};
+
+Expected<ColorSpaceChoice> choose_colorspace(const ColorMapLoadOptions& options,
+                                             const ImageData& img)
+{
+    if (!options.colorspace.empty()) return ColorSpaceChoice{options.colorspace, "--colorspace"};
+    if (img.colorspace_attr == "GammaCorrected") {
+        // OpenImageIO reports a PNG gAMA chunk (and similar) as a pure power law.
+        const float g = img.gamma_attr;
+        if (std::fabs(g - 2.2f) < 0.01f) return ColorSpaceChoice{"Gamma 2.2", "file metadata (gamma 2.2)"};
+        if (std::fabs(g - 1.8f) < 0.01f) return ColorSpaceChoice{"Gamma 1.8", "file metadata (gamma 1.8)"};
+        if (std::fabs(g - 1.0f) < 0.01f) return ColorSpaceChoice{"scene_linear", "file metadata (gamma 1.0)"};
+        std::ostringstream msg;
+        msg << "'" << options.path << "' declares gamma " << g
+            << ", which no colour space of the config matches; pass --colorspace NAME";
+        return bad_input(msg.str());
+    }
+    if (!img.colorspace_attr.empty())
+        return ColorSpaceChoice{img.colorspace_attr, "file metadata"};
+    if (img.is_float) return ColorSpaceChoice{"scene_linear", "default for float files"};
+    return ColorSpaceChoice{"sRGB", "default for integer files"};
+}
+
+}  // namespace
+
+Expected<LoadedColorMap> load_color_map(const ColorMapLoadOptions& options,
+                                        const ColorConfig& config)
+{
+    if (!std::isfinite(options.vmin) || !std::isfinite(options.vmax) ||
+        !(options.vmin < options.vmax)) {
+        std::ostringstream msg;
+        msg << "--domain " << options.vmin << ":" << options.vmax
+            << " is invalid (expected finite vmin < vmax)";
+        return bad_input(msg.str());
+    }
+    if (options.row && options.column)
+        return bad_input("--row and --column were both given; pick one gradient");
+
+    auto image = read_image(options.path);
+    if (!image) return image.error();
+    const ImageData& img = *image;
+
+    // Which texels form the gradient.
+    int start_x = 0, start_y = 0, step_x = 1, step_y = 0, count = img.width;
+    std::string selection = "row 0";
+    if (options.column || (img.width == 1 && img.height > 1 && !options.row)) {
+        const int c = options.column.value_or(0);
+        if (c < 0 || c >= img.width) {
+            std::ostringstream msg;
+            msg << "--column " << c << " is outside '" << options.path << "' (expected 0.."
+                << img.width - 1 << ")";
+            return bad_input(msg.str());
+        }
+        start_x = c, step_x = 0, step_y = 1, count = img.height;
+        selection = "column " + std::to_string(c);
+    } else if (options.row || img.height == 1) {
+        const int r = options.row.value_or(0);
+        if (r < 0 || r >= img.height) {
+            std::ostringstream msg;
+            msg << "--row " << r << " is outside '" << options.path << "' (expected 0.."
+                << img.height - 1 << ")";
+            return bad_input(msg.str());
+        }
+        start_y = r;
+        selection = "row " + std::to_string(r);
+    } else {
+        std::ostringstream msg;
+        msg << "'" << options.path << "' is " << img.width << " x " << img.height
+            << "; pass --row N or --column N to pick the gradient (or use a W x 1 image)";
+        return bad_input(msg.str());
+    }
+
+    // Gather RGB (grey replicated), rejecting non-finite texels.
+    std::vector<float> rgb(static_cast<std::size_t>(count) * 3);
+    for (int i = 0; i < count; ++i) {
+        const int x = start_x + i * step_x, y = start_y + i * step_y;
+        const float* p = img.pixels.data() + (static_cast<std::size_t>(y) * img.width + x) * img.channels;
+        for (int ch = 0; ch < 3; ++ch) {
+            const float v = img.channels >= 3 ? p[ch] : p[0];
+            if (!std::isfinite(v)) {
+                std::ostringstream msg;
+                msg << "'" << options.path << "' has a non-finite texel at (" << x << ", " << y
+                    << ") channel " << ch << ": " << v << "; expected finite colours";
+                return bad_input(msg.str());
+            }
+            rgb[3 * i + ch] = v;
+        }
+    }
+
+    auto choice = choose_colorspace(options, img);
+    if (!choice) return choice.error();
+    auto canonical = config.resolve(choice->name);
+    if (!canonical) {
+        if (choice->rule == "file metadata")
+            return bad_input("'" + options.path + "' declares colour space '" + choice->name +
+                             "' (oiio:ColorSpace), which the " + config.source() +
+                             " OpenColorIO config does not know; pass --colorspace NAME");
+        return canonical.error();
+    }
+    if (!config.is_data(*canonical)) {
+        if (auto st = config.to_scene_linear(rgb, *canonical); !st) return st.error();
+    }
+
+    LoadedColorMap out;
+    out.map.vmin = options.vmin;
+    out.map.vmax = options.vmax;
+    out.map.wrap = options.wrap;
+    out.map.texels.resize(count);
+    for (int i = 0; i < count; ++i) out.map.texels[i] = {rgb[3 * i], rgb[3 * i + 1], rgb[3 * i + 2]};
+    if (auto st = validate(out.map, "'" + options.path + "'"); !st) return st.error();
+
+    auto hash = sha256_file_hex(options.path);
+    if (!hash) return hash.error();
+    ColorMapProvenance& prov = out.provenance;
+    prov.path = options.path;
+    prov.sha256 = *hash;
+    prov.image_width = img.width;
+    prov.image_height = img.height;
+    prov.selection = selection;
+    prov.colorspace = *canonical;
+    prov.colorspace_rule = choice->rule;
+    prov.linear_space = config.scene_linear_name();
+    prov.ocio_config = config.source();
+    return out;
+}
+
+}  // namespace cmfilter

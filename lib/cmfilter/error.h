@@ -1,0 +1,59 @@
+// Typed errors for libcmfilter: every fallible library call returns Expected<T>,
+// which holds either a value or an Error whose kind maps onto one CLI exit code
+// (docs/exit-codes.md). No exceptions cross the library boundary.
+#pragma once
+
+#include <cassert>
+#include <string>
+#include <utility>
+#include <variant>
+
+namespace cmfilter {
+
+enum class ErrorKind {
+    Usage = 1,     // malformed command line (the CLI's own errors)
+    Io = 2,        // a file cannot be opened, read or written
+    BadInput = 3,  // a file or value is readable but invalid
+    Runtime = 4,   // an internal or library failure
+};
+
+struct Error {
+    ErrorKind kind = ErrorKind::Runtime;
+    std::string message;
+};
+
+inline Error io_error(std::string message) { return {ErrorKind::Io, std::move(message)}; }
+inline Error bad_input(std::string message) { return {ErrorKind::BadInput, std::move(message)}; }
+inline Error runtime_error(std::string message) { return {ErrorKind::Runtime, std::move(message)}; }
+
+// A value or an Error. Minimal by design: construct from either, test with
+// has_value()/operator bool, read with value()/error().
+template <typename T>
+class Expected {
+public:
+    Expected(T value) : data_(std::in_place_index<0>, std::move(value)) {}
+    Expected(Error error) : data_(std::in_place_index<1>, std::move(error)) {}
+
+    bool has_value() const { return data_.index() == 0; }
+    explicit operator bool() const { return has_value(); }
+
+    T& value() & { assert(has_value()); return std::get<0>(data_); }
+    const T& value() const& { assert(has_value()); return std::get<0>(data_); }
+    T&& value() && { assert(has_value()); return std::get<0>(std::move(data_)); }
+    T* operator->() { return &value(); }
+    const T* operator->() const { return &value(); }
+    T& operator*() & { return value(); }
+    const T& operator*() const& { return value(); }
+
+    const Error& error() const { assert(!has_value()); return std::get<1>(data_); }
+
+private:
+    std::variant<T, Error> data_;
+};
+
+// For calls that return nothing but may fail.
+struct Unit {};
+using Status = Expected<Unit>;
+inline Status ok() { return Unit{}; }
+
+}  // namespace cmfilter

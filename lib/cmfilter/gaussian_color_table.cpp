@@ -1,0 +1,183 @@
+#include "cmfilter/gaussian_color_table.h"
+
+#include "cmfilter/gaussian_convolution.h"
+#include "cmfilter/parallel_for.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace cmfilter {
+
+const char* to_string(SigmaSpacing spacing)
+{
+    return spacing == SigmaSpacing::Sqrt ? "sqrt" : "linear";
+}
+
+Expected<SigmaSpacing> parse_sigma_spacing(const std::string& name)
+{
+    if (name == "linear") return SigmaSpacing::Linear;
+    if (name == "sqrt") return SigmaSpacing::Sqrt;
+    return bad_input("unknown sigma spacing '" + name + "' (expected linear or sqrt)");
+}
+
+double TableAxes::value_first() const
+{
+    return wrap == WrapMode::Clamp ? vmin - margin : vmin;
+}
+
+double TableAxes::value_last() const
+{
+    switch (wrap) {
+    case WrapMode::Clamp: return vmax + margin;
+    case WrapMode::Mirror: return vmax;
+    case WrapMode::Repeat: return vmin + (vmax - vmin) * (values - 1) / values;
+    }
+    return vmax;
+}
+
+double TableAxes::value_at(int i) const
+{
+    if (wrap == WrapMode::Repeat) return vmin + (vmax - vmin) * i / values;
+    if (i == values - 1) return value_last();
+    return value_first() + (value_last() - value_first()) * i / (values - 1);
+}
+
+double TableAxes::sigma_at(int j) const
+{
+    if (j == sigmas - 1) return sigma_max;
+    const double t = static_cast<double>(j) / (sigmas - 1);
+    return sigma_max * (spacing == SigmaSpacing::Sqrt ? t * t : t);
+}
+
+Expected<TableAxes> make_table_axes(const ColorMap& map, const GaussianColorTableOptions& options)
+{
+    constexpr int kMaxNodes = 1 << 16;
+    auto check_count = [&](int n, const char* name) -> Status {
+        if (n < 2 || n > kMaxNodes) {
+            std::ostringstream msg;
+            msg << name << " " << n << " is out of range (expected 2.." << kMaxNodes
+                << " samples on the axis)";
+            return bad_input(msg.str());
+        }
+        return ok();
+    };
+    if (auto st = check_count(options.values, "--values"); !st) return st.error();
+    if (auto st = check_count(options.sigmas, "--sigmas"); !st) return st.error();
+
+    TableAxes axes;
+    axes.values = options.values;
+    axes.sigmas = options.sigmas;
+    axes.vmin = map.vmin;
+    axes.vmax = map.vmax;
+    axes.wrap = map.wrap;
+    axes.spacing = options.spacing;
+    axes.sigma_max = options.sigma_max.value_or((map.vmax - map.vmin) / 4.0);
+    if (!std::isfinite(axes.sigma_max) || axes.sigma_max <= 0) {
+        std::ostringstream msg;
+        msg << "--sigma-max " << axes.sigma_max << " is invalid (expected a finite value > 0)";
+        return bad_input(msg.str());
+    }
+    if (map.wrap == WrapMode::Clamp) {
+        axes.margin = options.margin.value_or(3.0 * axes.sigma_max);
+        if (!std::isfinite(axes.margin) || axes.margin < 0) {
+            std::ostringstream msg;
+            msg << "--margin " << axes.margin << " is invalid (expected a finite value >= 0)";
+            return bad_input(msg.str());
+        }
+    }
+    return axes;
+}
+
+GaussianColorTable::GaussianColorTable(TableAxes axes, std::vector<float> rgb)
+    : axes_(axes), rgb_(std::move(rgb))
+{
+}
+
+Expected<GaussianColorTable> GaussianColorTable::bake(const ColorMap& map,
+                                                      const GaussianColorTableOptions& options)
+{
+    if (auto st = validate(map, "colour map"); !st) return st.error();
+    auto axes = make_table_axes(map, options);
+    if (!axes) return axes.error();
+    const TableAxes& ax = *axes;
+
+    std::vector<double> value_nodes(ax.values);
+    for (int i = 0; i < ax.values; ++i) value_nodes[i] = ax.value_at(i);
+
+    std::vector<float> rgb(static_cast<std::size_t>(ax.values) * ax.sigmas * 3);
+    parallel_for(ax.sigmas, options.threads, [&](int j) {
+        const GaussianConvolution row(map, ax.sigma_at(j));  // eq. 10 for sigma_j
+        float* out = rgb.data() + static_cast<std::size_t>(j) * ax.values * 3;
+        for (int i = 0; i < ax.values; ++i) {
+            const Rgb c = row(value_nodes[i]);
+            out[3 * i + 0] = static_cast<float>(c.r);
+            out[3 * i + 1] = static_cast<float>(c.g);
+            out[3 * i + 2] = static_cast<float>(c.b);
+        }
+    });
+    for (float x : rgb)
+        if (!std::isfinite(x))
+            return runtime_error("baking produced a non-finite table value (internal error)");
+    return GaussianColorTable(ax, std::move(rgb));
+}
+
+Rgb GaussianColorTable::node(int i, int j) const
+{
+    const float* p = rgb_.data() + (static_cast<std::size_t>(j) * axes_.values + i) * 3;
+    return {p[0], p[1], p[2]};
+}
+
+Rgb GaussianColorTable::lookup(double mean, double sigma, LookupCounters* counters) const
+{
+    LookupCounters dummy;
+    LookupCounters& count = counters ? *counters : dummy;
+    ++count.lookups;
+    const TableAxes& ax = axes_;
+    const bool periodic = ax.wrap != WrapMode::Clamp;
+    if (std::isnan(mean) || std::isnan(sigma) || (periodic && !std::isfinite(mean))) {
+        ++count.invalid;
+        return {};
+    }
+
+    // Row coordinate (sigma < 0 is treated as 0; beyond sigma_max clamps).
+    double s = std::max(0.0, sigma);
+    if (s > ax.sigma_max) {
+        ++count.sigma_clamped;
+        s = ax.sigma_max;
+    }
+    double t = s / ax.sigma_max;
+    if (ax.spacing == SigmaSpacing::Sqrt) t = std::sqrt(t);
+    const double y = t * (ax.sigmas - 1);
+
+    // Column coordinate, following the wrap rule beyond the axis.
+    double x;
+    int i0, i1;
+    const double period = ax.vmax - ax.vmin;
+    if (ax.wrap == WrapMode::Repeat) {
+        x = wrap_coordinate(mean - ax.vmin, period, WrapMode::Repeat) / period * ax.values;
+        i0 = std::min(static_cast<int>(x), ax.values - 1);
+        i1 = (i0 + 1) % ax.values;
+    } else {
+        double v = mean;
+        if (ax.wrap == WrapMode::Mirror) {
+            v = ax.vmin + wrap_coordinate(mean - ax.vmin, period, WrapMode::Mirror);
+        } else if (v < ax.value_first() || v > ax.value_last()) {
+            ++count.value_clamped;
+            v = std::clamp(v, ax.value_first(), ax.value_last());
+        }
+        x = (v - ax.value_first()) / (ax.value_last() - ax.value_first()) * (ax.values - 1);
+        x = std::clamp(x, 0.0, static_cast<double>(ax.values - 1));
+        i0 = std::min(static_cast<int>(x), ax.values - 2);
+        i1 = i0 + 1;
+    }
+    const double fx = x - i0;
+    const int j0 = std::min(static_cast<int>(y), ax.sigmas - 2);
+    const double fy = y - j0;
+
+    const Rgb c00 = node(i0, j0), c10 = node(i1, j0), c01 = node(i0, j0 + 1),
+              c11 = node(i1, j0 + 1);
+    return (1 - fy) * ((1 - fx) * c00 + fx * c10) + fy * ((1 - fx) * c01 + fx * c11);
+}
+
+}  // namespace cmfilter

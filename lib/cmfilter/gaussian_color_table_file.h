@@ -1,0 +1,37 @@
+// The on-disk form of a GaussianColorTable: a scanline float32 RGB OpenEXR,
+// width = value nodes, height = sigma nodes (row 0 = sigma 0), carrying every
+// baking parameter as cmfilter:* metadata (docs/table-format.md). Written
+// atomically; read back with the geometry checked against the pixels.
+#pragma once
+
+#include "cmfilter/color_map_loading.h"
+#include "cmfilter/error.h"
+#include "cmfilter/error_summary.h"
+#include "cmfilter/gaussian_color_table.h"
+
+#include <optional>
+#include <string>
+
+namespace cmfilter {
+
+inline constexpr const char* kGaussianColorTableKind = "gaussian-color-table";
+
+// What a table file says about itself beyond its axes.
+struct GaussianColorTableInfo {
+    ColorMapProvenance source;
+    std::optional<ErrorSummary> lookup_error;  // CIEDE2000 of bilinear lookups vs exact
+    int lookup_error_samples = 0;
+    std::string baked_by;                      // cmfilter version
+};
+
+Status write_gaussian_color_table(const std::string& path, const GaussianColorTable& table,
+                                  const GaussianColorTableInfo& info);
+
+struct LoadedGaussianColorTable {
+    GaussianColorTable table;
+    GaussianColorTableInfo info;
+};
+
+Expected<LoadedGaussianColorTable> read_gaussian_color_table(const std::string& path);
+
+}  // namespace cmfilter

@@ -1,0 +1,241 @@
+// cmfilter-make-luts: writes the example colour maps that ship in luts/.
+// Each map is a 256 x 1 RGB 8-bit PNG whose texels are sRGB-encoded values;
+// every map is defined by a closed-form formula, stated in the comment above
+// the function that computes it, evaluated in double precision and rounded
+// to the nearest 8-bit code. Texel i covers the map domain [i/256, (i+1)/256)
+// and its centre is u_i = (i + 0.5) / 256. The committed PNGs are the output
+// of this program; the ctest test luts.regenerate checks that they still are.
+// Usage: cmfilter-make-luts OUTPUT_DIRECTORY. Each file is written to a
+// temporary name in the output directory and renamed into place, so a failed
+// run never leaves a truncated map behind.
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <functional>
+#include <iostream>
+#include <string>
+#include <system_error>
+#include <unistd.h>
+#include <vector>
+
+namespace {
+
+constexpr int kTexelCount = 256;
+
+// An sRGB-encoded colour, each channel in [0, 255] but not yet rounded.
+struct EncodedColor {
+    double r, g, b;
+};
+
+EncodedColor mix(const EncodedColor& a, const EncodedColor& b, double s)
+{
+    return {a.r + (b.r - a.r) * s, a.g + (b.g - a.g) * s, a.b + (b.b - a.b) * s};
+}
+
+double smoothstep(double x)
+{
+    x = std::clamp(x, 0.0, 1.0);
+    return x * x * (3.0 - 2.0 * x);
+}
+
+// ---------------------------------------------------------------------------
+// terrain.png: a smooth terrain-like gradient. Key colours (sRGB-encoded) at
+// positions t along the domain:
+//   t = 0.00 deep water    ( 10,  30,  90)
+//   t = 0.30 shallow water ( 40, 120, 190)
+//   t = 0.40 sand          (225, 205, 145)
+//   t = 0.55 grass         ( 70, 150,  60)
+//   t = 0.80 rock          (125, 110,  95)
+//   t = 1.00 snow          (250, 250, 250)
+// Texel i uses t = i / 255 (so the end texels are exactly the end keys). For
+// t between keys k and k+1: c(t) = c_k + (c_{k+1} - c_k) * S((t - t_k) /
+// (t_{k+1} - t_k)), with S(x) = 3x^2 - 2x^3, blended in encoded space.
+// ---------------------------------------------------------------------------
+EncodedColor terrain(int i)
+{
+    struct Key {
+        double position;
+        EncodedColor color;
+    };
+    static const std::array<Key, 6> keys = {{
+        {0.00, {10, 30, 90}},     // deep water
+        {0.30, {40, 120, 190}},   // shallow water
+        {0.40, {225, 205, 145}},  // sand
+        {0.55, {70, 150, 60}},    // grass
+        {0.80, {125, 110, 95}},   // rock
+        {1.00, {250, 250, 250}},  // snow
+    }};
+    const double t = static_cast<double>(i) / (kTexelCount - 1);
+    for (std::size_t k = 0; k + 1 < keys.size(); ++k) {
+        const Key& lo = keys[k];
+        const Key& hi = keys[k + 1];
+        if (t <= hi.position) {
+            return mix(lo.color, hi.color,
+                       smoothstep((t - lo.position) / (hi.position - lo.position)));
+        }
+    }
+    return keys.back().color;
+}
+
+// ---------------------------------------------------------------------------
+// stripes.png: 8 equal hard stripes of 32 texels each. Stripe s = floor(i / 32);
+// even stripes are dark red (120, 10, 20), odd stripes pale cyan
+// (170, 235, 240). No transition texels.
+// ---------------------------------------------------------------------------
+EncodedColor stripes(int i)
+{
+    const EncodedColor dark_red{120, 10, 20};
+    const EncodedColor pale_cyan{170, 235, 240};
+    const int stripe = i / (kTexelCount / 8);
+    return stripe % 2 == 0 ? dark_red : pale_cyan;
+}
+
+// ---------------------------------------------------------------------------
+// step.png: one sharp step at the middle of the domain. Texels 0..127 are dark
+// navy (15, 25, 80), texels 128..255 bright orange (255, 150, 20).
+// ---------------------------------------------------------------------------
+EncodedColor step(int i)
+{
+    const EncodedColor dark_navy{15, 25, 80};
+    const EncodedColor bright_orange{255, 150, 20};
+    return i < kTexelCount / 2 ? dark_navy : bright_orange;
+}
+
+// ---------------------------------------------------------------------------
+// narrow-band.png: a dark grey background (40, 40, 40) with one bright yellow
+// band (255, 230, 40) 4 texels wide centred at u = 0.7. Texel i belongs to the
+// band when its centre lies within 2 texels of 0.7, i.e.
+// |(i + 0.5) - 0.7 * 256| <= 2, which selects texels 177..180.
+// ---------------------------------------------------------------------------
+EncodedColor narrow_band(int i)
+{
+    const EncodedColor dark_grey{40, 40, 40};
+    const EncodedColor bright_yellow{255, 230, 40};
+    const double band_centre = 0.7 * kTexelCount;  // in texels
+    const double band_half_width = 2.0;             // in texels
+    return std::fabs((i + 0.5) - band_centre) <= band_half_width ? bright_yellow : dark_grey;
+}
+
+// ---------------------------------------------------------------------------
+// hue-ramp.png: a full hue circle at full saturation and value, computed in
+// encoded space with the standard HSV -> RGB formula. Texel i has hue
+// h = 360 * i / 256 degrees (so the ramp is periodic: texel 255 leads back
+// into texel 0). With H = h / 60, X = 1 - |H mod 2 - 1|, (r, g, b) is
+// (1,X,0), (X,1,0), (0,1,X), (0,X,1), (X,0,1), (1,0,X) for floor(H) = 0..5,
+// each scaled by 255.
+// ---------------------------------------------------------------------------
+EncodedColor hue_ramp(int i)
+{
+    const double sector = 6.0 * i / kTexelCount;  // H = h / 60, in [0, 6)
+    const double x = 1.0 - std::fabs(std::fmod(sector, 2.0) - 1.0);
+    EncodedColor unit{0, 0, 0};
+    switch (static_cast<int>(sector)) {
+        case 0: unit = {1, x, 0}; break;
+        case 1: unit = {x, 1, 0}; break;
+        case 2: unit = {0, 1, x}; break;
+        case 3: unit = {0, x, 1}; break;
+        case 4: unit = {x, 0, 1}; break;
+        default: unit = {1, 0, x}; break;
+    }
+    return {255.0 * unit.r, 255.0 * unit.g, 255.0 * unit.b};
+}
+
+struct ColorMapDefinition {
+    const char* file_name;
+    std::function<EncodedColor(int)> texel;
+};
+
+std::uint8_t to_code(double encoded)
+{
+    return static_cast<std::uint8_t>(std::lround(std::clamp(encoded, 0.0, 255.0)));
+}
+
+std::vector<std::uint8_t> evaluate(const ColorMapDefinition& map)
+{
+    std::vector<std::uint8_t> pixels;
+    pixels.reserve(3 * kTexelCount);
+    for (int i = 0; i < kTexelCount; ++i) {
+        const EncodedColor c = map.texel(i);
+        pixels.push_back(to_code(c.r));
+        pixels.push_back(to_code(c.g));
+        pixels.push_back(to_code(c.b));
+    }
+    return pixels;
+}
+
+// Writes `pixels` as a 256 x 1 RGB 8-bit sRGB PNG at `destination`, via a
+// temporary file in the same directory (same extension, so OpenImageIO picks
+// the PNG writer) that is renamed into place only once fully written.
+// Returns an empty string on success, otherwise a message naming the path.
+std::string write_png_atomically(const std::filesystem::path& destination,
+                                 const std::vector<std::uint8_t>& pixels)
+{
+    const std::filesystem::path temp =
+        destination.parent_path() / ("." + destination.stem().string() + ".tmp" +
+                                     std::to_string(::getpid()) + destination.extension().string());
+
+    OIIO::ImageSpec spec(kTexelCount, 1, 3, OIIO::TypeDesc::UINT8);
+    spec.attribute("oiio:ColorSpace", "sRGB");
+
+    auto output = OIIO::ImageOutput::create(temp.string());
+    if (!output) return "cannot create a PNG writer for '" + temp.string() + "': " + OIIO::geterror();
+    const bool written = output->open(temp.string(), spec) &&
+                         output->write_image(OIIO::TypeDesc::UINT8, pixels.data()) &&
+                         output->close();
+    if (!written) {
+        const std::string reason = output->geterror();
+        output.reset();
+        std::error_code ignored;
+        std::filesystem::remove(temp, ignored);
+        return "cannot write '" + temp.string() + "': " + reason;
+    }
+    output.reset();
+
+    std::error_code renamed;
+    std::filesystem::rename(temp, destination, renamed);
+    if (renamed) {
+        std::error_code ignored;
+        std::filesystem::remove(temp, ignored);
+        return "cannot rename '" + temp.string() + "' to '" + destination.string() +
+               "': " + renamed.message();
+    }
+    return {};
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    if (argc != 2) {
+        std::cerr << "usage: cmfilter-make-luts OUTPUT_DIRECTORY\n"
+                     "Writes the example colour maps (256 x 1 RGB 8-bit sRGB PNGs) into\n"
+                     "OUTPUT_DIRECTORY, replacing any files of the same names.\n";
+        return 1;
+    }
+    const std::filesystem::path output_directory = argv[1];
+    std::error_code status;
+    if (!std::filesystem::is_directory(output_directory, status)) {
+        std::cerr << "cmfilter-make-luts: output directory '" << output_directory.string()
+                  << "' does not exist or is not a directory\n";
+        return 2;
+    }
+
+    const std::vector<ColorMapDefinition> maps = {
+        {"terrain.png", terrain},         {"stripes.png", stripes},
+        {"step.png", step},               {"narrow-band.png", narrow_band},
+        {"hue-ramp.png", hue_ramp},
+    };
+    for (const ColorMapDefinition& map : maps) {
+        const std::string error = write_png_atomically(output_directory / map.file_name, evaluate(map));
+        if (!error.empty()) {
+            std::cerr << "cmfilter-make-luts: " << error << "\n";
+            return 2;
+        }
+    }
+    return 0;
+}

@@ -1,0 +1,54 @@
+// Writes the inputs the command-line tests need, including the bad ones that
+// no image tool would write on purpose: a NaN texel, an Inf texel, a text
+// file named .png, an empty file, a 2-D grid, and an 8-bit ramp.
+#include <OpenImageIO/imageio.h>
+
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace {
+
+bool write(const std::string& path, int w, int h, int ch, OIIO::TypeDesc type, const void* data,
+           const char* colorspace = nullptr)
+{
+    auto out = OIIO::ImageOutput::create(path);
+    OIIO::ImageSpec spec(w, h, ch, type);
+    if (colorspace) spec.attribute("oiio:ColorSpace", colorspace);
+    if (!out || !out->open(path, spec) || !out->write_image(type, data) || !out->close()) {
+        std::cerr << "make_fixtures: cannot write " << path << "\n";
+        return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    if (argc != 2) {
+        std::cerr << "usage: make_fixtures DIR\n";
+        return 2;
+    }
+    const std::string dir = argv[1];
+    bool ok = true;
+    std::vector<float> nan_map = {0.1f, 0.2f, 0.3f, NAN, 0.5f, 0.6f, 0.7f, 0.8f, 0.9f};
+    ok &= write(dir + "/nan.exr", 3, 1, 3, OIIO::TypeDesc::FLOAT, nan_map.data());
+    std::vector<float> inf_map = {0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.6f, 0.7f, 0.8f, INFINITY};
+    ok &= write(dir + "/inf.exr", 3, 1, 3, OIIO::TypeDesc::FLOAT, inf_map.data());
+    std::vector<unsigned char> grid(4 * 3 * 3);
+    for (std::size_t i = 0; i < grid.size(); ++i) grid[i] = static_cast<unsigned char>(i * 7);
+    ok &= write(dir + "/grid.png", 4, 3, 3, OIIO::TypeDesc::UINT8, grid.data());
+    std::vector<unsigned char> ramp(64 * 3);
+    for (int i = 0; i < 64; ++i) {
+        ramp[3 * i] = static_cast<unsigned char>(i * 4);
+        ramp[3 * i + 1] = static_cast<unsigned char>(255 - i * 4);
+        ramp[3 * i + 2] = static_cast<unsigned char>((i * 37) % 256);
+    }
+    ok &= write(dir + "/ramp.png", 64, 1, 3, OIIO::TypeDesc::UINT8, ramp.data());
+    std::ofstream(dir + "/not-an-image.png") << "this is text, not a PNG\n";
+    std::ofstream(dir + "/empty.png");
+    return ok ? 0 : 1;
+}

@@ -1,0 +1,28 @@
+// The shape every cmfilter subcommand takes: a setup function registers the
+// subcommand's options on the CLI11 app and returns the action to run once
+// parsing succeeded. Actions call the library and report; they return a
+// Status whose error main() prints once, as "cmfilter <cmd>: error: ...",
+// and maps to the exit code of its kind (docs/exit-codes.md).
+#pragma once
+
+#include "cmfilter/error.h"
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <string>
+
+namespace cmfilter::cli {
+
+struct Command {
+    CLI::App* app = nullptr;
+    std::function<Status()> run;
+};
+
+Command setup_bake_colormap(CLI::App& parent);
+Command setup_info(CLI::App& parent);
+
+// Splits "a:b" into two numbers; names the option and the text on failure.
+Expected<std::pair<double, double>> parse_range(const std::string& option, const std::string& text);
+
+}  // namespace cmfilter::cli

@@ -1,0 +1,52 @@
+// cmfilter: the command-line front end of libcmfilter. Parses, dispatches to
+// one subcommand, prints its error once and exits with the error's code.
+#include "command.h"
+
+#include "cmfilter/version.h"
+
+#include <iostream>
+#include <vector>
+
+int main(int argc, char** argv)
+{
+    using namespace cmfilter;
+    CLI::App app{"cmfilter: filters colour-mapped textures and surfaces correctly at every scale\n"
+                 "(Heitz et al. 2013, \"Filtering Color Mapped Textures and Surfaces\").",
+                 "cmfilter"};
+    app.set_version_flag("--version", std::string("cmfilter ") + version());
+    app.require_subcommand(1);
+    app.footer("Exit codes: 0 ok, 1 usage, 2 I/O, 3 bad input, 4 runtime error.\n"
+               "Run 'cmfilter <command> --help' for a command's options.");
+
+    std::vector<cli::Command> commands = {cli::setup_bake_colormap(app), cli::setup_info(app)};
+
+    auto prefix = [&]() {
+        std::string p = "cmfilter";
+        for (const auto* sub : app.get_subcommands()) p += " " + sub->get_name();
+        return p;
+    };
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::cerr << prefix() << ": error: " << e.what() << "\n"
+                  << "Run '" << prefix() << " --help' for usage.\n";
+        return static_cast<int>(ErrorKind::Usage);
+    }
+
+    for (const auto& command : commands) {
+        if (!command.app->parsed()) continue;
+        Status status = command.run();
+        if (!status) {
+            std::cerr << prefix() << ": error: " << status.error().message << "\n";
+            return static_cast<int>(status.error().kind);
+        }
+        return 0;
+    }
+    return 0;
+}
