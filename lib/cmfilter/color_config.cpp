@@ -83,7 +83,10 @@ Status apply(const OCIO::ConstConfigRcPtr& config, std::vector<float>& rgb, cons
     if (rgb.empty()) return ok();
     try {
         auto processor = config->getProcessor(src.c_str(), dst.c_str());
-        auto cpu = processor->getDefaultCPUProcessor();
+        // LOSSLESS: no fast pow/log/exp approximations (they cost up to 1e-6
+        // absolute on sRGB decoding, the whole accuracy budget of a table).
+        auto cpu = processor->getOptimizedCPUProcessor(OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32,
+                                                        OCIO::OPTIMIZATION_LOSSLESS);
         OCIO::PackedImageDesc desc(rgb.data(), static_cast<long>(rgb.size() / 3), 1, 3);
         cpu->apply(desc);
     } catch (const OCIO::Exception& e) {

@@ -28,8 +28,16 @@ inline double ramp_convolution(double d, double s)
 GaussianConvolution::GaussianConvolution(const ColorMap& map, double sigma)
     : map_(&map), s_(std::max(0.0, sigma) / map.texel_width())
 {
-    if (map.wrap == WrapMode::Clamp || s_ == 0.0) return;
-    period_ = map.wrap == WrapMode::Repeat ? map.size() : 2.0 * map.size();
+    if (s_ == 0.0) return;
+    // Non-zero steps C(k+1) - C(k): over nodes 0..n-1 (clamp) or one period.
+    period_ = map.wrap == WrapMode::Clamp ? 0.0
+              : map.wrap == WrapMode::Repeat ? map.size() : 2.0 * map.size();
+    const long last = map.wrap == WrapMode::Clamp ? map.size() - 1 : static_cast<long>(period_);
+    for (long k = 0; k < last; ++k) {
+        const Rgb delta = map.node(k + 1) - map.node(k);
+        if (delta.r != 0.0 || delta.g != 0.0 || delta.b != 0.0) steps_.push_back({k, delta});
+    }
+    if (map.wrap == WrapMode::Clamp) return;
     // Fourier pays off once the step sum would cover more than a few periods.
     if (2.0 * kTail * s_ < 4.0 * period_) return;
     use_fourier_ = true;
@@ -66,26 +74,37 @@ Rgb GaussianConvolution::operator()(double v) const
 
 Rgb GaussianConvolution::sum_of_steps(double x) const
 {
-    const long n = map_->size();
     const ColorMap& map = *map_;
+    const long n = map.size();
     // For clamp, fold x far outside the nodes back to where the map is constant.
     double xc = x;
     if (map.wrap == WrapMode::Clamp) xc = std::clamp(x, -kTail * s_ - 2.0, n + 1.0 + kTail * s_);
-    long k_lo = static_cast<long>(std::floor(xc - kTail * s_));
-    long k_hi = static_cast<long>(std::ceil(xc + kTail * s_));
+    const long k_lo = static_cast<long>(std::floor(xc - kTail * s_));
+    const long k_hi = static_cast<long>(std::ceil(xc + kTail * s_));
     Rgb result = map.node(k_lo);
-    if (map.wrap == WrapMode::Clamp) {
-        // Steps are zero outside nodes 0..n-1.
-        k_lo = std::max(k_lo, 0L);
-        k_hi = std::min(k_hi, n - 1);
-    }
-    if (k_lo >= k_hi) return result;
-    double r_prev = ramp_convolution(xc - k_lo, s_);
-    for (long k = k_lo; k < k_hi; ++k) {
-        const double r_next = ramp_convolution(xc - k - 1, s_);
-        const double step = r_prev - r_next;  // (S * N)(x - k)
-        r_prev = r_next;
-        result += step * (map.node(k + 1) - map.node(k));
+
+    // Steps k in [k_lo, k_hi): the non-zero ones only, repeated every period
+    // for periodic maps. Adjacent steps share one ramp evaluation.
+    const long period = map.wrap == WrapMode::Clamp ? 0 : static_cast<long>(period_);
+    long base = 0;
+    if (period > 0) base = (k_lo >= 0 ? k_lo / period : -((-k_lo + period - 1) / period)) * period;
+    long last_k = k_lo - 2;
+    double r_last = 0;
+    for (; base < k_hi; base += period) {
+        auto it = steps_.begin();
+        if (period == 0 || base < k_lo)
+            it = std::lower_bound(steps_.begin(), steps_.end(), k_lo - base,
+                                  [](const Step& st, long k) { return st.k < k; });
+        for (; it != steps_.end(); ++it) {
+            const long k = base + it->k;
+            if (k >= k_hi) break;
+            const double r_here = k == last_k + 1 ? r_last : ramp_convolution(xc - k, s_);
+            const double r_next = ramp_convolution(xc - k - 1, s_);
+            result += (r_here - r_next) * it->delta;  // (S * N)(x - k) [C(k+1) - C(k)]
+            last_k = k;
+            r_last = r_next;
+        }
+        if (period == 0) break;
     }
     return result;
 }

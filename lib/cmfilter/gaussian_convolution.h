@@ -33,7 +33,13 @@ private:
     Rgb sum_of_steps(double x) const;
     Rgb fourier_series(double x) const;
 
+    struct Step {
+        long k;      // between nodes k and k + 1
+        Rgb delta;   // C(k+1) - C(k), never all zero
+    };
+
     const ColorMap* map_;
+    std::vector<Step> steps_;
     double s_;  // sigma in texels
     bool use_fourier_ = false;
     double period_ = 0;  // in nodes

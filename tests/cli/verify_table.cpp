@@ -1,5 +1,7 @@
 // Independent check of a table written by `cmfilter bake-colormap`: decodes
-// the map image with the stated transfer formula (not OpenColorIO), reads the
+// the map image with the stated transfer formula (not OpenColorIO; "srgb" is
+// the C1 sRGB curve of cmfilter's built-in config, see
+// reference_convolution.h), reads the
 // table and its metadata with plain OpenImageIO, places the nodes by the
 // geometry documented in docs/table-format.md, and compares nodes with
 // brute-force quadrature (tests/support/reference_convolution.h).
@@ -21,7 +23,7 @@ namespace {
 
 double decode(const std::string& how, double e)
 {
-    if (how == "srgb") return cmfilter_test::srgb_to_linear(e);
+    if (how == "srgb") return cmfilter_test::srgb_moncurve_to_linear(e);
     if (how == "gamma2.2") return e <= 0 ? 0.0 : std::pow(e, 2.2);
     return e;
 }

@@ -96,4 +96,16 @@ inline double srgb_to_linear(double e)
     return e <= 0.04045 ? e / 12.92 : std::pow((e + 0.055) / 1.055, 2.4);
 }
 
+// The same curve made C1-continuous (the "moncurve" that OpenColorIO's
+// ExponentWithLinearTransform {gamma: 2.4, offset: 0.055} implements, and so
+// cmfilter's built-in sRGB space): the power segment ((e + o) / (1 + o))^g
+// meets its tangent through the origin at e_b = o / (g - 1) = 0.0392857 instead
+// of 0.04045. It differs from the IEC formula only in the toe, by < 7.6e-7.
+inline double srgb_moncurve_to_linear(double e)
+{
+    const double g = 2.4, o = 0.055, eb = o / (g - 1);
+    const double yb = std::pow((eb + o) / (1 + o), g);
+    return e <= eb ? e * (yb / eb) : std::pow((e + o) / (1 + o), g);
+}
+
 }  // namespace cmfilter_test

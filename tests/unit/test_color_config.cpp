@@ -28,12 +28,18 @@ TEST_CASE("sRGB decoding matches the IEC 61966-2-1 formula for every 8-bit code"
     for (int code = 0; code < 256; ++code)
         for (int ch = 0; ch < 3; ++ch) rgb.push_back(code / 255.0f);
     REQUIRE(config.to_scene_linear(rgb, "sRGB"));
-    double worst = 0;
-    for (int code = 0; code < 256; ++code)
-        worst = std::max(worst, std::fabs(rgb[3 * code + 1] - cmfilter_test::srgb_to_linear(code / 255.0)));
-    // OpenColorIO's moncurve with gamma 2.4 / offset 0.055 is the sRGB formula;
-    // 2e-6 covers float32 evaluation of the power function.
-    CHECK(worst < 2e-6);
+    double worst_iec = 0, worst_moncurve = 0;
+    for (int code = 0; code < 256; ++code) {
+        const double e = code / 255.0;
+        worst_iec = std::max(worst_iec, std::fabs(rgb[3 * code + 1] - cmfilter_test::srgb_to_linear(e)));
+        worst_moncurve = std::max(worst_moncurve, std::fabs(rgb[3 * code + 1] - cmfilter_test::srgb_moncurve_to_linear(e)));
+    }
+    // The built-in sRGB space is OpenColorIO's C1 moncurve: it matches the IEC
+    // formula except in the toe (codes 10 and below), where the two curves'
+    // breakpoints differ by 0.0012 and the values by < 7.6e-7.
+    CHECK(worst_iec < 7.6e-7);
+    // Against the moncurve formula itself only float32 rounding remains.
+    CHECK(worst_moncurve < 1e-7);
 }
 
 TEST_CASE("gamma 2.2 decoding is a pure power law, not the sRGB curve")
