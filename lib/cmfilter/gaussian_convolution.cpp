@@ -37,9 +37,78 @@ GaussianConvolution::GaussianConvolution(const ColorMap& map, double sigma)
         const Rgb delta = map.node(k + 1) - map.node(k);
         if (delta.r != 0.0 || delta.g != 0.0 || delta.b != 0.0) steps_.push_back({k, delta});
     }
-    if (map.wrap == WrapMode::Clamp) return;
     // Fourier pays off once the step sum would cover more than a few periods.
-    if (2.0 * kTail * s_ < 4.0 * period_) return;
+    if (map.wrap != WrapMode::Clamp && 2.0 * kTail * s_ >= 4.0 * period_) {
+        build_fourier_series();
+        return;
+    }
+    if (s_ >= kBlockMinSigma) build_kink_blocks();
+}
+
+void GaussianConvolution::build_kink_blocks()
+{
+    // C0(y) = C(lo) + sum_k kappa_k max(0, y - k) on [lo, hi], constant beyond;
+    // kappa_k = [C(k+1) - C(k)] - [C(k) - C(k-1)] are the slope changes. For
+    // clamp [lo, hi] = [0, n-1] is exact; a periodic map is unrolled far
+    // enough (9 s beyond one period each side) for any x wrapped into one period.
+    const ColorMap& map = *map_;
+    const long n = map.size();
+    long lo = 0, hi = n - 1;
+    if (map.wrap != WrapMode::Clamp) {
+        const long reach = static_cast<long>(std::ceil(kTail * s_)) + 2;
+        lo = -reach;
+        hi = static_cast<long>(period_) + reach;
+    }
+    use_blocks_ = true;
+    blocks_base_ = map.node(lo);
+    const long width = std::max(1L, static_cast<long>(std::floor(s_)));  // B <= s: h <= 1/2
+    Rgb previous;  // C(k) - C(k-1), zero left of lo
+    for (long first = lo; first <= hi; first += width) {
+        const long last = std::min(hi, first + width - 1);
+        KinkBlock block;
+        block.centre = 0.5 * static_cast<double>(first + last);
+        bool any = false;
+        for (long k = first; k <= last; ++k) {
+            const Rgb next = k < hi ? map.node(k + 1) - map.node(k) : Rgb{};
+            const Rgb kappa = next - previous;
+            previous = next;
+            if (kappa.r == 0.0 && kappa.g == 0.0 && kappa.b == 0.0) continue;
+            any = true;
+            // M_p += kappa u^p / p!,  u = (centre - k) / s.
+            const double u = (block.centre - static_cast<double>(k)) / s_;
+            double term = 1.0;
+            for (int p = 0; p < kTaylorTerms; ++p) {
+                block.moments[p] += term * kappa;
+                term *= u / (p + 1);
+            }
+        }
+        if (any) blocks_.push_back(block);
+    }
+    // Keep the expansion only where it is cheaper than the step sum: a block
+    // in reach costs about three step evaluations (erfc, exp and 15 Hermite
+    // terms); the step sum evaluates each non-zero step within 9 s (twice
+    // when steps are isolated).
+    const double steps_span = map.wrap == WrapMode::Clamp ? static_cast<double>(n - 1) : period_;
+    const double density = static_cast<double>(steps_.size()) / std::max(1.0, steps_span);
+    const double step_cost = density * (2.0 * kTail * s_ + 1.0) * (density < 0.5 ? 2.0 : 1.0);
+    const double blocks_in_reach =
+        std::min(static_cast<double>(blocks_.size()), (2.0 * kTail + 1.0) * s_ / width + 1.0);
+    if (3.0 * blocks_in_reach >= step_cost) {
+        use_blocks_ = false;
+        blocks_.clear();
+        return;
+    }
+    prefix_.resize(blocks_.size() + 1);
+    for (std::size_t b = 0; b < blocks_.size(); ++b) {
+        prefix_[b + 1].m0 = prefix_[b].m0 + blocks_[b].moments[0];
+        prefix_[b + 1].m1 = prefix_[b].m1 + blocks_[b].moments[1];
+        prefix_[b + 1].centre_m0 = prefix_[b].centre_m0 + blocks_[b].centre * blocks_[b].moments[0];
+    }
+}
+
+void GaussianConvolution::build_fourier_series()
+{
+    const ColorMap& map = *map_;
     use_fourier_ = true;
 
     // Periodic node values c_k, k = 0..p-1, and their mean (harmonic 0:
@@ -69,7 +138,62 @@ Rgb GaussianConvolution::operator()(double v) const
 {
     const double x = map_->node_coordinate(v);
     if (s_ == 0.0 || !std::isfinite(x)) return map_->evaluate(v);
-    return use_fourier_ ? fourier_series(x) : sum_of_steps(x);
+    if (use_fourier_) return fourier_series(x);
+    if (use_blocks_) return sum_of_kink_blocks(x);
+    return sum_of_steps(x);
+}
+
+Rgb GaussianConvolution::sum_of_kink_blocks(double x) const
+{
+    if (map_->wrap != WrapMode::Clamp) x = wrap_coordinate(x, period_, WrapMode::Repeat);
+    // Block b contributes sum_k kappa_k R(x - k). Taylor-expanding R about the
+    // block centre c, R(x - k) = sum_p R^(p)(x - c) (c - k)^p / p!, with
+    //   s^0 R     = s (t Phi(t) + phi(t)),   s R' = s Phi(t),
+    //   s^p R^(p) = s (-1)^p He_{p-2}(t) phi(t)  (p >= 2),   t = (x - c) / s,
+    // gives sum_p [s^p R^(p)(x - c)] M_p with the block moments M_p.
+    // Lagrange remainder (Cramer's bound |He_m phi| <= 0.433 sqrt(m!)), with
+    // |c - k| <= s/2 and 17 terms: <= 0.433 s 2^-17 sqrt(15!)/17! |kappa|
+    //   = 1.1e-14 s |kappa| per kink.
+    const double s = s_;
+    const double reach = (kTail + 0.5) * s;
+    // Blocks whose every kink lies more than 9 s to the left of x have
+    // R(x - k) = x - k: their sum is x sum M_0 - sum c M_0 + s sum M_1, read
+    // from prefix sums. Blocks more than 9 s to the right contribute nothing.
+    const auto by_centre = [](const KinkBlock& b, double c) { return b.centre < c; };
+    const std::size_t first = static_cast<std::size_t>(
+        std::lower_bound(blocks_.begin(), blocks_.end(), x - reach, by_centre) - blocks_.begin());
+    const std::size_t end = static_cast<std::size_t>(
+        std::lower_bound(blocks_.begin(), blocks_.end(), x + reach, by_centre) - blocks_.begin());
+    const LinearPrefix& left = prefix_[first];
+    Rgb result = blocks_base_ + x * left.m0 - left.centre_m0 + s * left.m1;
+    for (std::size_t b = first; b < end; ++b) {
+        const KinkBlock& block = blocks_[b];
+        const double d = x - block.centre;
+        const double t = d / s;
+        const double cdf = 0.5 * std::erfc(-t * kInvSqrt2);
+        const double pdf = kInvSqrt2Pi * std::exp(-0.5 * t * t);
+        double r[3] = {0, 0, 0};
+        auto add = [&](double w, const Rgb& m) {
+            r[0] += w * m.r;
+            r[1] += w * m.g;
+            r[2] += w * m.b;
+        };
+        add(d * cdf + s * pdf, block.moments[0]);
+        add(s * cdf, block.moments[1]);
+        // He_0 = 1, He_1 = t, He_{m+1} = t He_m - m He_{m-1}.
+        double he_prev = 0.0, he = 1.0, sign = 1.0;
+        const double sp = s * pdf;
+        for (int p = 2; p < kTaylorTerms; ++p) {
+            add(sign * sp * he, block.moments[p]);
+            const double m = p - 2;
+            const double he_next = t * he - m * he_prev;
+            he_prev = he;
+            he = he_next;
+            sign = -sign;
+        }
+        result += Rgb{r[0], r[1], r[2]};
+    }
+    return result;
 }
 
 Rgb GaussianConvolution::sum_of_steps(double x) const

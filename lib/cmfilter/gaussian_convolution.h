@@ -9,7 +9,12 @@
 // where R = max(0, .) * N(0, s^2). Steps further than 9 s from v are folded
 // into the constant term; the Gaussian mass they miss is Phi(-9) < 1.2e-19 per
 // side, so the result is exact to double rounding (no truncated or
-// unnormalised kernel). For repeat/mirror maps and s of the order of the
+// unnormalised kernel). For s >= 4 texels, where it is cheaper, the same sum is regrouped: C0 is
+// written with its slope changes kappa_k (C0 = C(lo) + sum kappa_k max(0, x - k)),
+// kinks are grouped in blocks of at most s nodes, and R(x - k) is
+// Taylor-expanded about each block's centre (17 terms, remainder below
+// 1.1e-14 s |kappa| per kink), so a block costs one erfc and one exp instead
+// of one per node. For repeat/mirror maps and s of the order of the
 // period, the Fourier series of the periodic map is used instead: the hat
 // basis transforms to sinc^2 and the Gaussian multiplies harmonic m by
 // exp(-2 pi^2 m^2 s^2 / p^2); harmonics below 1e-18 are dropped.
@@ -29,8 +34,15 @@ public:
 
     Rgb operator()(double v) const;
 
+    // Sigma (in texels) from which the kink-block expansion replaces the step sum.
+    static constexpr double kBlockMinSigma = 4.0;
+    static constexpr int kTaylorTerms = 17;
+
 private:
+    void build_fourier_series();
+    void build_kink_blocks();
     Rgb sum_of_steps(double x) const;
+    Rgb sum_of_kink_blocks(double x) const;
     Rgb fourier_series(double x) const;
 
     struct Step {
@@ -38,8 +50,23 @@ private:
         Rgb delta;   // C(k+1) - C(k), never all zero
     };
 
+    // Up to s consecutive nodes' slope changes, as Taylor moments about their
+    // centre: moments[p] = sum_k kappa_k ((centre - k) / s)^p / p!.
+    struct KinkBlock {
+        double centre = 0;
+        Rgb moments[kTaylorTerms];
+    };
+
     const ColorMap* map_;
     std::vector<Step> steps_;
+    bool use_blocks_ = false;
+    Rgb blocks_base_;
+    std::vector<KinkBlock> blocks_;  // sorted by centre
+    // Sums over blocks [0, b) of M_0, M_1 and centre * M_0.
+    struct LinearPrefix {
+        Rgb m0, m1, centre_m0;
+    };
+    std::vector<LinearPrefix> prefix_;
     double s_;  // sigma in texels
     bool use_fourier_ = false;
     double period_ = 0;  // in nodes
