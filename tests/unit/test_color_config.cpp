@@ -2,7 +2,7 @@
 // function and primaries set to the published formulas and matrices.
 #include "cmfilter/color_config.h"
 
-#include "reference_convolution.h"
+#include "unit_test_support.h"
 
 #include <doctest/doctest.h>
 
@@ -10,20 +10,9 @@
 
 using namespace cmfilter;
 
-namespace {
-
-ColorConfig builtin()
-{
-    auto config = ColorConfig::load("");
-    REQUIRE(config);
-    return *config;
-}
-
-}  // namespace
-
 TEST_CASE("sRGB decoding matches the IEC 61966-2-1 formula for every 8-bit code")
 {
-    const ColorConfig config = builtin();
+    const ColorConfig config = cmfilter_test::builtin_color_config();
     std::vector<float> rgb;
     for (int code = 0; code < 256; ++code)
         for (int ch = 0; ch < 3; ++ch) rgb.push_back(code / 255.0f);
@@ -44,7 +33,7 @@ TEST_CASE("sRGB decoding matches the IEC 61966-2-1 formula for every 8-bit code"
 
 TEST_CASE("gamma 2.2 decoding is a pure power law, not the sRGB curve")
 {
-    const ColorConfig config = builtin();
+    const ColorConfig config = cmfilter_test::builtin_color_config();
     std::vector<float> rgb = {0.0f, 0.02f, 0.5f, 0.25f, 0.75f, 1.0f};
     const std::vector<float> in = rgb;
     REQUIRE(config.to_scene_linear(rgb, "g22_rec709"));
@@ -55,7 +44,7 @@ TEST_CASE("gamma 2.2 decoding is a pure power law, not the sRGB curve")
 
 TEST_CASE("ACEScg converts to linear Rec.709 with the published matrix")
 {
-    const ColorConfig config = builtin();
+    const ColorConfig config = cmfilter_test::builtin_color_config();
     // ACEScg primaries and white, as three pixels.
     std::vector<float> rgb = {1, 0, 0, 0, 1, 0, 1, 1, 1};
     REQUIRE(config.to_scene_linear(rgb, "ACEScg"));
@@ -72,7 +61,7 @@ TEST_CASE("ACEScg converts to linear Rec.709 with the published matrix")
 
 TEST_CASE("names resolve through aliases, unknown names list the known ones")
 {
-    const ColorConfig config = builtin();
+    const ColorConfig config = cmfilter_test::builtin_color_config();
     CHECK(*config.resolve("srgb_tx") == "sRGB Encoded Rec.709");
     CHECK(*config.resolve("Linear") == "Linear Rec.709");
     CHECK(config.scene_linear_name() == "Linear Rec.709");

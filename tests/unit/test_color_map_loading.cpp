@@ -2,7 +2,7 @@
 // decisions, and bad input.
 #include "cmfilter/color_map_loading.h"
 
-#include "reference_convolution.h"
+#include "unit_test_support.h"
 
 #include <OpenImageIO/imageio.h>
 #include <doctest/doctest.h>
@@ -33,13 +33,6 @@ void write_image(const std::string& path, int w, int h, int ch, OIIO::TypeDesc t
     REQUIRE(out->close());
 }
 
-ColorConfig builtin()
-{
-    auto config = ColorConfig::load("");
-    REQUIRE(config);
-    return *config;
-}
-
 }  // namespace
 
 TEST_CASE("an 8-bit PNG is decoded as sRGB and laid over the domain")
@@ -51,7 +44,7 @@ TEST_CASE("an 8-bit PNG is decoded as sRGB and laid over the domain")
     opt.path = path;
     opt.vmin = -1;
     opt.vmax = 2;
-    auto loaded = load_color_map(opt, builtin());
+    auto loaded = load_color_map(opt, cmfilter_test::builtin_color_config());
     REQUIRE(loaded);
     REQUIRE(loaded->map.size() == 3);
     for (int i = 0; i < 9; ++i)
@@ -69,13 +62,13 @@ TEST_CASE("a float EXR is linear by default; --colorspace overrides the file")
     write_image(path, 2, 1, 3, OIIO::TypeDesc::FLOAT, px);
     ColorMapLoadOptions opt;
     opt.path = path;
-    auto loaded = load_color_map(opt, builtin());
+    auto loaded = load_color_map(opt, cmfilter_test::builtin_color_config());
     REQUIRE(loaded);
     CHECK(loaded->map.texels[0].b == doctest::Approx(2.0));  // no conversion, HDR kept
     CHECK(loaded->provenance.colorspace == "Linear Rec.709");
 
     opt.colorspace = "ACEScg";
-    auto acescg = load_color_map(opt, builtin());
+    auto acescg = load_color_map(opt, cmfilter_test::builtin_color_config());
     REQUIRE(acescg);
     // Row 1 of the AP1 -> Rec.709 matrix applied to (0.5, 0.25, 2.0).
     CHECK(acescg->map.texels[0].g == doctest::Approx(-0.1302564 * 0.5 + 1.1408047 * 0.25 - 0.0105483 * 2.0).epsilon(1e-4));
@@ -90,16 +83,16 @@ TEST_CASE("rows and columns of a larger image; grey replicated")
     write_image(path, 4, 3, 1, OIIO::TypeDesc::FLOAT, px.data());
     ColorMapLoadOptions opt;
     opt.path = path;
-    CHECK(load_color_map(opt, builtin()).error().message.find("pass --row N or --column N") != std::string::npos);
+    CHECK(load_color_map(opt, cmfilter_test::builtin_color_config()).error().message.find("pass --row N or --column N") != std::string::npos);
     opt.row = 1;
-    auto row = load_color_map(opt, builtin());
+    auto row = load_color_map(opt, cmfilter_test::builtin_color_config());
     REQUIRE(row);
     CHECK(row->map.size() == 4);
     CHECK(row->map.texels[2].r == 6.0);
     CHECK(row->map.texels[2].b == 6.0);
     opt.row.reset();
     opt.column = 3;
-    auto col = load_color_map(opt, builtin());
+    auto col = load_color_map(opt, cmfilter_test::builtin_color_config());
     REQUIRE(col);
     CHECK(col->map.size() == 3);
     CHECK(col->map.texels[2].g == 11.0);
@@ -113,7 +106,7 @@ TEST_CASE("the file's declared colour space is honoured")
     write_image(path, 2, 1, 3, OIIO::TypeDesc::FLOAT, px, "lin_ap1_scene");
     ColorMapLoadOptions opt;
     opt.path = path;
-    auto loaded = load_color_map(opt, builtin());
+    auto loaded = load_color_map(opt, cmfilter_test::builtin_color_config());
     REQUIRE(loaded);
     CHECK(loaded->provenance.colorspace == "ACEScg");
     CHECK(loaded->provenance.colorspace_rule == "file metadata");

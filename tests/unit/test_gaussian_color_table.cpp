@@ -2,21 +2,17 @@
 // map, the axes' geometry, bilinear lookup and its out-of-range rules.
 #include "cmfilter/gaussian_color_table.h"
 
-#include "reference_convolution.h"
+#include "unit_test_support.h"
 
 #include <doctest/doctest.h>
 
 #include <random>
 
 using namespace cmfilter;
+using cmfilter_test::MapPair;
 using cmfilter_test::ReferenceMap;
 
 namespace {
-
-struct MapPair {
-    ColorMap map;
-    ReferenceMap ref;
-};
 
 MapPair stripes_and_noise(WrapMode wrap, int n, std::uint64_t seed)
 {

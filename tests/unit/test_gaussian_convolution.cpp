@@ -3,21 +3,17 @@
 // for any correct Gaussian filter.
 #include "cmfilter/gaussian_convolution.h"
 
-#include "reference_convolution.h"
+#include "unit_test_support.h"
 
 #include <doctest/doctest.h>
 
 #include <random>
 
 using namespace cmfilter;
+using cmfilter_test::MapPair;
 using cmfilter_test::ReferenceMap;
 
 namespace {
-
-struct MapPair {
-    ColorMap map;
-    ReferenceMap ref;
-};
 
 MapPair random_map(std::mt19937_64& rng, int n, WrapMode wrap, double vmin, double vmax)
 {
