@@ -1,6 +1,7 @@
 // Writes the inputs the command-line tests need, including the bad ones that
 // no image tool would write on purpose: a NaN texel, an Inf texel, a text
-// file named .png, an empty file, a 2-D grid, and an 8-bit ramp.
+// file named .png, an empty file, a 2-D grid, and an 8-bit ramp (plain, and
+// tagged gamma 2.2 the way a PNG gAMA chunk is).
 #include <OpenImageIO/imageio.h>
 
 #include <cmath>
@@ -12,11 +13,14 @@
 namespace {
 
 bool write(const std::string& path, int w, int h, int ch, OIIO::TypeDesc type, const void* data,
-           const char* colorspace = nullptr)
+           float gamma = 0)
 {
     auto out = OIIO::ImageOutput::create(path);
     OIIO::ImageSpec spec(w, h, ch, type);
-    if (colorspace) spec.attribute("oiio:ColorSpace", colorspace);
+    if (gamma > 0) {  // a PNG gAMA chunk, as OpenImageIO names it
+        spec.attribute("oiio:ColorSpace", "GammaCorrected");
+        spec.attribute("oiio:Gamma", gamma);
+    }
     if (!out || !out->open(path, spec) || !out->write_image(type, data) || !out->close()) {
         std::cerr << "make_fixtures: cannot write " << path << "\n";
         return false;
@@ -48,6 +52,7 @@ int main(int argc, char** argv)
         ramp[3 * i + 2] = static_cast<unsigned char>((i * 37) % 256);
     }
     ok &= write(dir + "/ramp.png", 64, 1, 3, OIIO::TypeDesc::UINT8, ramp.data());
+    ok &= write(dir + "/ramp-gamma22.png", 64, 1, 3, OIIO::TypeDesc::UINT8, ramp.data(), 2.2f);
     std::ofstream(dir + "/not-an-image.png") << "this is text, not a PNG\n";
     std::ofstream(dir + "/empty.png");
     return ok ? 0 : 1;

@@ -56,7 +56,7 @@ TEST_CASE("every table node equals the exact convolution to 1e-6")
                 }
             CAPTURE(to_string(wrap));
             CAPTURE(to_string(spacing));
-            // The bound: nodes are float32, so this also bounds storage rounding.
+            // The documented bound (docs/bake-colormap.md): nodes are float32, so this also bounds storage rounding.
             CHECK(worst < 1e-6);
         }
 }
