@@ -59,44 +59,64 @@ void GaussianConvolution::build_kink_blocks()
         lo = -reach;
         hi = static_cast<long>(period_) + reach;
     }
-    use_blocks_ = true;
-    blocks_base_ = map.node(lo);
-    const long width = std::max(1L, static_cast<long>(std::floor(s_)));  // B <= s: h <= 1/2
+    // B <= 3 s: every kink within h = 1.5 s of its block centre.
+    const long width = std::max(1L, static_cast<long>(std::floor(kBlockWidth * s_)));
+
+    // The non-zero slope changes, and how many blocks they fall in.
+    struct Kink {
+        long k;
+        Rgb kappa;
+    };
+    std::vector<Kink> kinks;
+    std::size_t occupied_blocks = 0;
     Rgb previous;  // C(k) - C(k-1), zero left of lo
-    for (long first = lo; first <= hi; first += width) {
-        const long last = std::min(hi, first + width - 1);
-        KinkBlock block;
-        block.centre = 0.5 * static_cast<double>(first + last);
-        bool any = false;
-        for (long k = first; k <= last; ++k) {
-            const Rgb next = k < hi ? map.node(k + 1) - map.node(k) : Rgb{};
-            const Rgb kappa = next - previous;
-            previous = next;
-            if (kappa.r == 0.0 && kappa.g == 0.0 && kappa.b == 0.0) continue;
-            any = true;
-            // M_p += kappa u^p / p!,  u = (centre - k) / s.
-            const double u = (block.centre - static_cast<double>(k)) / s_;
-            double term = 1.0;
-            for (int p = 0; p < kTaylorTerms; ++p) {
-                block.moments[p] += term * kappa;
-                term *= u / (p + 1);
-            }
-        }
-        if (any) blocks_.push_back(block);
+    for (long k = lo; k <= hi; ++k) {
+        const Rgb next = k < hi ? map.node(k + 1) - map.node(k) : Rgb{};
+        const Rgb kappa = next - previous;
+        previous = next;
+        if (kappa.r == 0.0 && kappa.g == 0.0 && kappa.b == 0.0) continue;
+        if (kinks.empty() || (kinks.back().k - lo) / width != (k - lo) / width) ++occupied_blocks;
+        kinks.push_back({k, kappa});
     }
-    // Keep the expansion only where it is cheaper than the step sum: a block
-    // in reach costs about three step evaluations (erfc, exp and 15 Hermite
-    // terms); the step sum evaluates each non-zero step within 9 s (twice
-    // when steps are isolated).
+
+    // Use the expansion only where it is cheaper than the step sum: a block
+    // in reach costs one erfc and one exp (about one step evaluation) plus
+    // kTaylorTerms Hermite terms (about 0.055 step evaluations each); the step
+    // sum evaluates each non-zero step within 9 s (twice when steps are isolated).
     const double steps_span = map.wrap == WrapMode::Clamp ? static_cast<double>(n - 1) : period_;
     const double density = static_cast<double>(steps_.size()) / std::max(1.0, steps_span);
     const double step_cost = density * (2.0 * kTail * s_ + 1.0) * (density < 0.5 ? 2.0 : 1.0);
     const double blocks_in_reach =
-        std::min(static_cast<double>(blocks_.size()), (2.0 * kTail + 1.0) * s_ / width + 1.0);
-    if (3.0 * blocks_in_reach >= step_cost) {
-        use_blocks_ = false;
-        blocks_.clear();
-        return;
+        std::min(static_cast<double>(occupied_blocks), (2.0 * kTail + 1.0) * s_ / width + 1.0);
+    if ((1.0 + 0.055 * kTaylorTerms) * blocks_in_reach >= step_cost) return;
+
+    use_blocks_ = true;
+    blocks_base_ = map.node(lo);
+    // M_p = sum_k kappa_k u^p / p!,  u = (centre - k) / s, block by block.
+    // Kinks go two at a time so that their power chains overlap.
+    auto accumulate = [&](KinkBlock& block, const Kink* a, const Kink* b) {
+        const double ua = (block.centre - static_cast<double>(a->k)) / s_;
+        const double ub = b ? (block.centre - static_cast<double>(b->k)) / s_ : 0.0;
+        const Rgb kb = b ? b->kappa : Rgb{};
+        double ta = 1.0, tb = 1.0;
+        for (int p = 0; p < kTaylorTerms; ++p) {
+            block.moments[p] += ta * a->kappa + tb * kb;
+            const double inv = 1.0 / (p + 1);
+            ta *= ua * inv;
+            tb *= ub * inv;
+        }
+    };
+    for (std::size_t i = 0; i < kinks.size();) {
+        const long index = (kinks[i].k - lo) / width;
+        const long first = lo + index * width;
+        const long last = std::min(hi, first + width - 1);
+        KinkBlock block;
+        block.centre = 0.5 * static_cast<double>(first + last);
+        std::size_t end = i;
+        while (end < kinks.size() && kinks[end].k <= last) ++end;
+        for (; i + 1 < end; i += 2) accumulate(block, &kinks[i], &kinks[i + 1]);
+        if (i < end) accumulate(block, &kinks[i], nullptr), ++i;
+        blocks_.push_back(block);
     }
     prefix_.resize(blocks_.size() + 1);
     for (std::size_t b = 0; b < blocks_.size(); ++b) {
@@ -152,8 +172,8 @@ Rgb GaussianConvolution::sum_of_kink_blocks(double x) const
     //   s^p R^(p) = s (-1)^p He_{p-2}(t) phi(t)  (p >= 2),   t = (x - c) / s,
     // gives sum_p [s^p R^(p)(x - c)] M_p with the block moments M_p.
     // Lagrange remainder (Cramer's bound |He_m phi| <= 0.433 sqrt(m!)), with
-    // |c - k| <= s/2 and 17 terms: <= 0.433 s 2^-17 sqrt(15!)/17! |kappa|
-    //   = 1.1e-14 s |kappa| per kink.
+    // |c - k| <= h s, h = 1.5, and 33 terms (p = 0..32):
+    //   <= 0.433 s h^33 sqrt(31!) / 33! |kappa| = 2.9e-15 s |kappa| per kink.
     const double s = s_;
     const double reach = (kTail + 0.5) * s;
     // Blocks whose every kink lies more than 9 s to the left of x have
@@ -166,32 +186,47 @@ Rgb GaussianConvolution::sum_of_kink_blocks(double x) const
         std::lower_bound(blocks_.begin(), blocks_.end(), x + reach, by_centre) - blocks_.begin());
     const LinearPrefix& left = prefix_[first];
     Rgb result = blocks_base_ + x * left.m0 - left.centre_m0 + s * left.m1;
-    for (std::size_t b = first; b < end; ++b) {
-        const KinkBlock& block = blocks_[b];
-        const double d = x - block.centre;
-        const double t = d / s;
-        const double cdf = 0.5 * std::erfc(-t * kInvSqrt2);
-        const double pdf = kInvSqrt2Pi * std::exp(-0.5 * t * t);
-        double r[3] = {0, 0, 0};
-        auto add = [&](double w, const Rgb& m) {
-            r[0] += w * m.r;
-            r[1] += w * m.g;
-            r[2] += w * m.b;
-        };
-        add(d * cdf + s * pdf, block.moments[0]);
-        add(s * cdf, block.moments[1]);
-        // He_0 = 1, He_1 = t, He_{m+1} = t He_m - m He_{m-1}.
-        double he_prev = 0.0, he = 1.0, sign = 1.0;
-        const double sp = s * pdf;
-        for (int p = 2; p < kTaylorTerms; ++p) {
-            add(sign * sp * he, block.moments[p]);
-            const double m = p - 2;
-            const double he_next = t * he - m * he_prev;
-            he_prev = he;
-            he = he_next;
-            sign = -sign;
+    // Blocks in reach, a chunk at a time: erfc and exp per block, then the
+    // Hermite recurrence and the moment sums with the term index outermost, so
+    // that the blocks of a chunk advance side by side instead of each waiting
+    // on its own recurrence.
+    constexpr std::size_t kChunk = 32;
+    for (std::size_t chunk = first; chunk < end; chunk += kChunk) {
+        const std::size_t count = std::min(kChunk, end - chunk);
+        const KinkBlock* block = blocks_.data() + chunk;
+        double t[kChunk], weight[kChunk], he[kChunk], he_prev[kChunk];
+        double r[kChunk], g[kChunk], bl[kChunk];
+        for (std::size_t j = 0; j < count; ++j) {
+            const double d = x - block[j].centre;
+            t[j] = d / s;
+            const double cdf = 0.5 * std::erfc(-t[j] * kInvSqrt2);
+            const double sp = s * kInvSqrt2Pi * std::exp(-0.5 * t[j] * t[j]);
+            const double w0 = d * cdf + sp, w1 = s * cdf;
+            const Rgb& m0 = block[j].moments[0];
+            const Rgb& m1 = block[j].moments[1];
+            r[j] = w0 * m0.r + w1 * m1.r;
+            g[j] = w0 * m0.g + w1 * m1.g;
+            bl[j] = w0 * m0.b + w1 * m1.b;
+            weight[j] = sp;      // s phi(t) (-1)^p, sign folded in as p advances
+            he[j] = 1.0;         // He_0
+            he_prev[j] = 0.0;
         }
-        result += Rgb{r[0], r[1], r[2]};
+        // He_0 = 1, He_1 = t, He_{m+1} = t He_m - m He_{m-1}.
+        for (int p = 2; p < kTaylorTerms; ++p) {
+            const double m = p - 2;
+            for (std::size_t j = 0; j < count; ++j) {
+                const double w = weight[j] * he[j];
+                const Rgb& mp = block[j].moments[p];
+                r[j] += w * mp.r;
+                g[j] += w * mp.g;
+                bl[j] += w * mp.b;
+                const double next = t[j] * he[j] - m * he_prev[j];
+                he_prev[j] = he[j];
+                he[j] = next;
+                weight[j] = -weight[j];
+            }
+        }
+        for (std::size_t j = 0; j < count; ++j) result += Rgb{r[j], g[j], bl[j]};
     }
     return result;
 }

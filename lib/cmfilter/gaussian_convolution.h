@@ -9,12 +9,12 @@
 // where R = max(0, .) * N(0, s^2). Steps further than 9 s from v are folded
 // into the constant term; the Gaussian mass they miss is Phi(-9) < 1.2e-19 per
 // side, so the result is exact to double rounding (no truncated or
-// unnormalised kernel). For s >= 4 texels, where it is cheaper, the same sum is regrouped: C0 is
-// written with its slope changes kappa_k (C0 = C(lo) + sum kappa_k max(0, x - k)),
-// kinks are grouped in blocks of at most s nodes, and R(x - k) is
-// Taylor-expanded about each block's centre (17 terms, remainder below
-// 1.1e-14 s |kappa| per kink), so a block costs one erfc and one exp instead
-// of one per node. For repeat/mirror maps and s of the order of the
+// unnormalised kernel). For s >= 1 texel, where it is cheaper, the same sum is
+// regrouped: C0 is written with its slope changes kappa_k
+// (C0 = C(lo) + sum kappa_k max(0, x - k)), kinks are grouped in blocks of at
+// most 3 s nodes, and R(x - k) is Taylor-expanded about each block's centre
+// (33 terms, remainder below 2.9e-15 s |kappa| per kink), so a block costs one
+// erfc and one exp instead of one per node. For repeat/mirror maps and s of the order of the
 // period, the Fourier series of the periodic map is used instead: the hat
 // basis transforms to sinc^2 and the Gaussian multiplies harmonic m by
 // exp(-2 pi^2 m^2 s^2 / p^2); harmonics below 1e-18 are dropped.
@@ -35,8 +35,10 @@ public:
     Rgb operator()(double v) const;
 
     // Sigma (in texels) from which the kink-block expansion replaces the step sum.
-    static constexpr double kBlockMinSigma = 4.0;
-    static constexpr int kTaylorTerms = 17;
+    static constexpr double kBlockMinSigma = 1.0;
+    // Block width in sigmas, and Taylor terms per block (remainder bound below).
+    static constexpr double kBlockWidth = 3.0;
+    static constexpr int kTaylorTerms = 33;
 
 private:
     void build_fourier_series();
