@@ -1,5 +1,6 @@
 #include "cmfilter/gaussian_color_table.h"
 
+#include "cmfilter/cosine_series_rows.h"
 #include "cmfilter/gaussian_convolution.h"
 #include "cmfilter/parallel_for.h"
 
@@ -8,6 +9,14 @@
 #include <sstream>
 
 namespace cmfilter {
+
+namespace {
+
+// Largest bound on the cosine series' dropped harmonics at which a row takes
+// that path: 600 times below float32 rounding of a unit value (6e-8).
+constexpr double kSeriesTolerance = 1e-10;
+
+}  // namespace
 
 const char* to_string(SigmaSpacing spacing)
 {
@@ -102,13 +111,48 @@ Expected<GaussianColorTable> GaussianColorTable::bake(const ColorMap& map,
     if (!axes) return axes.error();
     const TableAxes& ax = *axes;
 
+    std::vector<float> rgb(static_cast<std::size_t>(ax.values) * ax.sigmas * 3);
+    auto row_data = [&](int j) { return rgb.data() + static_cast<std::size_t>(j) * ax.values * 3; };
+
+    // Rows with sigma of a few value nodes or more: the cosine series of the
+    // mirrored map, two rows per FFT (clamp maps; cosine_series_rows.h), where
+    // its bound on the dropped harmonics is below kSeriesTolerance and it is
+    // estimated cheaper than the exact step / kink-block sum.
+    struct Task {
+        bool series = false;
+        int row_a = 0, row_b = -1;
+    };
+    std::vector<Task> tasks;
+    std::vector<int> series_rows;
+    std::optional<CosineSeriesRows> series;
+    if (ax.wrap == WrapMode::Clamp) {
+        series.emplace(map, ax.value_first(), (ax.value_last() - ax.value_first()) / (ax.values - 1),
+                       ax.values, ax.sigma_max);
+    }
+    for (int j = 0; j < ax.sigmas; ++j) {
+        const double sigma = ax.sigma_at(j);
+        if (series && series->error_bound(sigma) <= kSeriesTolerance &&
+            series->row_cost() < ax.values * GaussianConvolution::estimated_cost(map, sigma))
+            series_rows.push_back(j);
+        else
+            tasks.push_back({false, j, -1});
+    }
+    for (std::size_t k = 0; k < series_rows.size(); k += 2)
+        tasks.push_back({true, series_rows[k], k + 1 < series_rows.size() ? series_rows[k + 1] : -1});
+    if (!series_rows.empty()) series->compute_coefficients(options.threads);
+
     std::vector<double> value_nodes(ax.values);
     for (int i = 0; i < ax.values; ++i) value_nodes[i] = ax.value_at(i);
-
-    std::vector<float> rgb(static_cast<std::size_t>(ax.values) * ax.sigmas * 3);
-    parallel_for(ax.sigmas, options.threads, [&](int j) {
-        const GaussianConvolution row(map, ax.sigma_at(j));  // eq. 10 for sigma_j
-        float* out = rgb.data() + static_cast<std::size_t>(j) * ax.values * 3;
+    parallel_for(static_cast<int>(tasks.size()), options.threads, [&](int t) {
+        const Task& task = tasks[t];
+        if (task.series) {
+            series->evaluate(ax.sigma_at(task.row_a), row_data(task.row_a),
+                             task.row_b >= 0 ? ax.sigma_at(task.row_b) : 0.0,
+                             task.row_b >= 0 ? row_data(task.row_b) : nullptr);
+            return;
+        }
+        const GaussianConvolution row(map, ax.sigma_at(task.row_a));  // eq. 10 for sigma_j
+        float* out = row_data(task.row_a);
         for (int i = 0; i < ax.values; ++i) {
             const Rgb c = row(value_nodes[i]);
             out[3 * i + 0] = static_cast<float>(c.r);

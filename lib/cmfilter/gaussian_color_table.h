@@ -65,7 +65,9 @@ public:
     GaussianColorTable() = default;
     GaussianColorTable(TableAxes axes, std::vector<float> rgb);  // rgb: sigmas x values x 3
 
-    // Bakes every node with the exact convolution (gaussian_convolution.h).
+    // Bakes every node with the exact convolution: per node by the step and
+    // kink-block sums (gaussian_convolution.h), or whole rows of clamp maps by
+    // the bounded cosine series (cosine_series_rows.h).
     static Expected<GaussianColorTable> bake(const ColorMap& map,
                                              const GaussianColorTableOptions& options);
 

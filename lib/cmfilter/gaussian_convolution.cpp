@@ -23,7 +23,45 @@ inline double ramp_convolution(double d, double s)
     return d * cdf + s * pdf;
 }
 
+// The step sum evaluates each non-zero step within 9 s (twice when steps are
+// isolated); density = non-zero steps per node.
+double step_sum_cost(double density, double s)
+{
+    return density * (2.0 * kTail * s + 1.0) * (density < 0.5 ? 2.0 : 1.0);
+}
+
+// A kink block in reach costs one erfc and one exp (about one step
+// evaluation) plus kTaylorTerms Hermite terms (about 0.055 step evaluations each).
+constexpr double kBlockCost = 1.0 + 0.055 * GaussianConvolution::kTaylorTerms;
+
 }  // namespace
+
+double GaussianConvolution::estimated_cost(const ColorMap& map, double sigma)
+{
+    const double s = std::max(0.0, sigma) / map.texel_width();
+    if (s == 0.0) return 0.0;
+    const long n = map.size();
+    const double period = map.wrap == WrapMode::Clamp ? 0.0
+                          : map.wrap == WrapMode::Repeat ? n : 2.0 * n;
+    if (map.wrap != WrapMode::Clamp && 2.0 * kTail * s >= 4.0 * period) {
+        // Fourier series: harmonics until exp(-2 pi^2 m^2 s^2 / p^2) < 1e-18.
+        return 0.1 * period * std::sqrt(41.5 / (2.0 * kPi * kPi)) / s + 1.0;
+    }
+    const long last = map.wrap == WrapMode::Clamp ? n - 1 : static_cast<long>(period);
+    long steps = 0;
+    for (long k = 0; k < last; ++k) {
+        const Rgb delta = map.node(k + 1) - map.node(k);
+        if (delta.r != 0.0 || delta.g != 0.0 || delta.b != 0.0) ++steps;
+    }
+    const double density = static_cast<double>(steps) / std::max(1.0, static_cast<double>(last));
+    double cost = step_sum_cost(density, s);
+    if (s >= kBlockMinSigma) {
+        const double blocks = std::min(static_cast<double>(steps) + 1.0,
+                                       (2.0 * kTail + 1.0) / kBlockWidth + 1.0);
+        cost = std::min(cost, kBlockCost * blocks);
+    }
+    return cost;
+}
 
 GaussianConvolution::GaussianConvolution(const ColorMap& map, double sigma)
     : map_(&map), s_(std::max(0.0, sigma) / map.texel_width())
@@ -79,16 +117,12 @@ void GaussianConvolution::build_kink_blocks()
         kinks.push_back({k, kappa});
     }
 
-    // Use the expansion only where it is cheaper than the step sum: a block
-    // in reach costs one erfc and one exp (about one step evaluation) plus
-    // kTaylorTerms Hermite terms (about 0.055 step evaluations each); the step
-    // sum evaluates each non-zero step within 9 s (twice when steps are isolated).
+    // Use the expansion only where it is cheaper than the step sum.
     const double steps_span = map.wrap == WrapMode::Clamp ? static_cast<double>(n - 1) : period_;
     const double density = static_cast<double>(steps_.size()) / std::max(1.0, steps_span);
-    const double step_cost = density * (2.0 * kTail * s_ + 1.0) * (density < 0.5 ? 2.0 : 1.0);
     const double blocks_in_reach =
         std::min(static_cast<double>(occupied_blocks), (2.0 * kTail + 1.0) * s_ / width + 1.0);
-    if ((1.0 + 0.055 * kTaylorTerms) * blocks_in_reach >= step_cost) return;
+    if (kBlockCost * blocks_in_reach >= step_sum_cost(density, s_)) return;
 
     use_blocks_ = true;
     blocks_base_ = map.node(lo);

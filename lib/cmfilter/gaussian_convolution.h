@@ -34,6 +34,11 @@ public:
 
     Rgb operator()(double v) const;
 
+    // Estimated cost of one evaluation in closed-form ramp evaluations (one
+    // erfc and one exp each), without building anything: lets a caller choose
+    // between this and a cheaper route for a whole row (gaussian_color_table.cpp).
+    static double estimated_cost(const ColorMap& map, double sigma);
+
     // Sigma (in texels) from which the kink-block expansion replaces the step sum.
     static constexpr double kBlockMinSigma = 1.0;
     // Block width in sigmas, and Taylor terms per block (remainder bound below).

@@ -11,25 +11,10 @@
 
 using namespace cmfilter;
 using cmfilter_test::MapPair;
+using cmfilter_test::random_map;
 using cmfilter_test::ReferenceMap;
 
 namespace {
-
-MapPair random_map(std::mt19937_64& rng, int n, WrapMode wrap, double vmin, double vmax)
-{
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
-    MapPair p;
-    p.map.vmin = p.ref.vmin = vmin;
-    p.map.vmax = p.ref.vmax = vmax;
-    p.map.wrap = wrap;
-    p.ref.wrap = to_string(wrap);
-    for (int i = 0; i < n; ++i) {
-        const double r = unit(rng), g = unit(rng), b = 4.0 * unit(rng);  // b exceeds 1: HDR maps too
-        p.map.texels.push_back({r, g, b});
-        p.ref.texels.push_back({r, g, b});
-    }
-    return p;
-}
 
 double max_abs_diff(const Rgb& a, const cmfilter_test::Rgb3& b)
 {
