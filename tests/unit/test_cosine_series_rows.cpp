@@ -83,7 +83,7 @@ TEST_CASE("cosine-series rows match quadrature wherever their bound is below 1e-
     }
 }
 
-TEST_CASE("the cosine series' error bound is an upper bound where it is not negligible")
+TEST_CASE("the cosine-series error bound is an upper bound where it is not negligible")
 {
     std::mt19937_64 rng(12);
     const MapPair p = random_clamp_map(rng, 256, 0.0, 1.0, true);
@@ -103,7 +103,7 @@ TEST_CASE("the cosine series' error bound is an upper bound where it is not negl
     CHECK(tested >= 2);
 }
 
-TEST_CASE("the error bound is infinite outside (0, sigma_max]")
+TEST_CASE("the error bound is infinite for sigma <= 0 and above sigma_max")
 {
     std::mt19937_64 rng(13);
     const MapPair p = random_clamp_map(rng, 16, 0.0, 1.0, false);
