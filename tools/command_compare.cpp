@@ -113,11 +113,13 @@ Command setup_compare(CLI::App& parent)
     app->add_option("--colorspace-b", args->colorspace_b, "Colour space of B (default: as for A)");
     app->add_option("--ocio-config", args->ocio_config,
                     "OpenColorIO config (default: $OCIO if set, else the built-in config)");
-    app->add_option("--heatmap", args->heatmap,
-                    "Write the per-pixel CIEDE2000 as an 8-bit sRGB PNG (black, red, yellow, white)");
+    auto* heatmap = app->add_option(
+        "--heatmap", args->heatmap,
+        "Write the per-pixel CIEDE2000 as an 8-bit sRGB PNG (black, red, yellow, white)");
     app->add_option("--heatmap-max", args->heatmap_max,
                     "CIEDE2000 drawn as white in the heat map; larger errors saturate")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->needs(heatmap);
     app->add_option("--threads", args->threads, "Threads (0: all cores)")->capture_default_str();
     app->add_flag("--json", args->json, "Print the results as JSON on stdout");
     app->add_flag("-q,--quiet", args->quiet, "Print nothing on success");

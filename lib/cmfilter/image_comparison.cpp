@@ -102,17 +102,15 @@ Expected<LinearImage> load_linear(const std::string& path, const std::string& re
 Expected<ImageComparison> compare_images(const ImageComparisonOptions& options,
                                          const ColorConfig& config)
 {
-    const bool heatmap = !options.heatmap_path.empty();
-    if (heatmap) {
-        if (!std::isfinite(options.heatmap_max) || !(options.heatmap_max > 0.0)) {
-            std::ostringstream msg;
-            msg << "--heatmap-max " << options.heatmap_max
-                << " is invalid (expected a finite Delta E00 > 0)";
-            return bad_input(msg.str());
-        }
-        // Before any work, so a bad destination fails fast.
-        if (auto st = check_output_path(options.heatmap_path, ".png"); !st) return st.error();
+    if (!std::isfinite(options.heatmap_max) || !(options.heatmap_max > 0.0)) {
+        std::ostringstream msg;
+        msg << "--heatmap-max " << options.heatmap_max << " is invalid (expected a finite Delta E00 > 0)";
+        return bad_input(msg.str());
     }
+    const bool heatmap = !options.heatmap_path.empty();
+    // Before any work, so a bad destination fails fast.
+    if (heatmap)
+        if (auto st = check_output_path(options.heatmap_path, ".png"); !st) return st.error();
 
     auto a = load_linear(options.path_a, options.colorspace_a, "--colorspace-a", config);
     if (!a) return a.error();
