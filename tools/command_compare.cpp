@@ -15,12 +15,8 @@ namespace cmfilter::cli {
 namespace {
 
 struct CompareArgs {
-    std::string a, b;
-    std::string colorspace_a, colorspace_b;
+    ImageComparisonOptions options;  // the options bind straight to its fields
     std::string ocio_config;
-    std::string heatmap;
-    double heatmap_max = 10.0;
-    int threads = 0;
     bool json = false;
     bool quiet = false;
 };
@@ -65,15 +61,7 @@ Status run(const CompareArgs& args)
 {
     auto config = load_color_config(args.ocio_config);
     if (!config) return config.error();
-    ImageComparisonOptions options;
-    options.path_a = args.a;
-    options.path_b = args.b;
-    options.colorspace_a = args.colorspace_a;
-    options.colorspace_b = args.colorspace_b;
-    options.heatmap_path = args.heatmap;
-    options.heatmap_max = args.heatmap_max;
-    options.threads = args.threads;
-    auto c = compare_images(options, *config);
+    auto c = compare_images(args.options, *config);
     if (!c) return c.error();
 
     if (args.json) {
@@ -105,22 +93,22 @@ Command setup_compare(CLI::App& parent)
     auto args = std::make_shared<CompareArgs>();
     CLI::App* app = parent.add_subcommand(
         "compare", "RMSE and CIEDE2000 (mean, p95, max) between two images, with a heat map");
-    app->add_option("A", args->a, "First image: any image OpenImageIO reads")->required();
-    app->add_option("B", args->b, "Second image, the same size as A")->required();
-    app->add_option("--colorspace-a", args->colorspace_a,
+    app->add_option("A", args->options.path_a, "First image: any image OpenImageIO reads")->required();
+    app->add_option("B", args->options.path_b, "Second image, the same size as A")->required();
+    app->add_option("--colorspace-a", args->options.colorspace_a,
                     "Colour space of A (default: the file's metadata, else sRGB for integer and "
                     "linear for float files)");
-    app->add_option("--colorspace-b", args->colorspace_b, "Colour space of B (default: as for A)");
+    app->add_option("--colorspace-b", args->options.colorspace_b, "Colour space of B (default: as for A)");
     app->add_option("--ocio-config", args->ocio_config,
                     "OpenColorIO config (default: $OCIO if set, else the built-in config)");
     auto* heatmap = app->add_option(
-        "--heatmap", args->heatmap,
+        "--heatmap", args->options.heatmap_path,
         "Write the per-pixel CIEDE2000 as an 8-bit sRGB PNG (black, red, yellow, white)");
-    app->add_option("--heatmap-max", args->heatmap_max,
+    app->add_option("--heatmap-max", args->options.heatmap_max,
                     "CIEDE2000 drawn as white in the heat map; larger errors saturate")
         ->capture_default_str()
         ->needs(heatmap);
-    app->add_option("--threads", args->threads, "Threads (0: all cores)")->capture_default_str();
+    app->add_option("--threads", args->options.threads, "Threads (0: all cores)")->capture_default_str();
     app->add_flag("--json", args->json, "Print the results as JSON on stdout");
     app->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
     return {app, [args] { return run(*args); }};
