@@ -18,7 +18,7 @@ namespace cmfilter {
 namespace {
 
 struct LinearImage {
-    ImageData data;
+    ImageData data;          // size and metadata (its pixels are released once copied)
     ComparedImage info;
     std::vector<float> rgb;  // width * height * 3, scene-linear
 };
@@ -69,6 +69,7 @@ Expected<LinearImage> load_linear(const std::string& path, const std::string& re
     out.info.channels = img.channels;
     out.info.pixel_type = img.pixel_type;
     out.rgb = rgb_samples(img);
+    std::vector<float>().swap(out.data.pixels);  // only the RGB copy is needed from here
 
     if (const NonFinite nf = find_non_finite(out.rgb); nf.pixels > 0) {
         const std::size_t pixel = nf.first / 3;
