@@ -5,6 +5,7 @@
 // and maps to the exit code of its kind (docs/exit-codes.md).
 #pragma once
 
+#include "cmfilter/color_config.h"
 #include "cmfilter/error.h"
 
 #include <CLI/CLI.hpp>
@@ -20,9 +21,14 @@ struct Command {
 };
 
 Command setup_bake_colormap(CLI::App& parent);
+Command setup_compare(CLI::App& parent);
 Command setup_info(CLI::App& parent);
 
 // Splits "a:b" into two numbers; names the option and the text on failure.
 Expected<std::pair<double, double>> parse_range(const std::string& option, const std::string& text);
+
+// The OpenColorIO config named by --ocio-config (empty: $OCIO if set, else
+// the built-in config).
+Expected<ColorConfig> load_color_config(const std::string& ocio_config_option);
 
 }  // namespace cmfilter::cli

@@ -10,7 +10,6 @@
 #include <nlohmann/json.hpp>
 
 #include <chrono>
-#include <cstdlib>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -53,10 +52,7 @@ Status run(const BakeColormapArgs& args)
         return bad_input("--error-samples " + std::to_string(args.error_samples) +
                          " is negative (expected >= 0; 0 skips the measurement)");
 
-    std::string config_path = args.ocio_config;
-    if (config_path.empty())
-        if (const char* env = std::getenv("OCIO"); env && *env) config_path = env;
-    auto config = ColorConfig::load(config_path);
+    auto config = load_color_config(args.ocio_config);
     if (!config) return config.error();
 
     ColorMapLoadOptions load;

@@ -1,5 +1,6 @@
 #include "cmfilter/color_map_loading.h"
 
+#include "cmfilter/image_colorspace.h"
 #include "cmfilter/image_reading.h"
 #include "cmfilter/sha256.h"
 
@@ -7,36 +8,6 @@
 #include <sstream>
 
 namespace cmfilter {
-
-namespace {
-
-struct ColorSpaceChoice {
-    std::string name;  // as given, before resolution
-    std::string rule;
-};
-
-Expected<ColorSpaceChoice> choose_colorspace(const ColorMapLoadOptions& options,
-                                             const ImageData& img)
-{
-    if (!options.colorspace.empty()) return ColorSpaceChoice{options.colorspace, "--colorspace"};
-    if (img.colorspace_attr == "GammaCorrected") {
-        // OpenImageIO reports a PNG gAMA chunk (and similar) as a pure power law.
-        const float g = img.gamma_attr;
-        if (std::fabs(g - 2.2f) < 0.01f) return ColorSpaceChoice{"Gamma 2.2", "file metadata (gamma 2.2)"};
-        if (std::fabs(g - 1.8f) < 0.01f) return ColorSpaceChoice{"Gamma 1.8", "file metadata (gamma 1.8)"};
-        if (std::fabs(g - 1.0f) < 0.01f) return ColorSpaceChoice{"scene_linear", "file metadata (gamma 1.0)"};
-        std::ostringstream msg;
-        msg << "'" << options.path << "' declares gamma " << g
-            << ", which no colour space of the config matches; pass --colorspace NAME";
-        return bad_input(msg.str());
-    }
-    if (!img.colorspace_attr.empty())
-        return ColorSpaceChoice{img.colorspace_attr, "file metadata"};
-    if (img.is_float) return ColorSpaceChoice{"scene_linear", "default for float files"};
-    return ColorSpaceChoice{"sRGB", "default for integer files"};
-}
-
-}  // namespace
 
 Expected<LoadedColorMap> load_color_map(const ColorMapLoadOptions& options,
                                         const ColorConfig& config)
@@ -102,19 +73,9 @@ Expected<LoadedColorMap> load_color_map(const ColorMapLoadOptions& options,
         }
     }
 
-    auto choice = choose_colorspace(options, img);
-    if (!choice) return choice.error();
-    auto canonical = config.resolve(choice->name);
-    if (!canonical) {
-        if (choice->rule == "file metadata")
-            return bad_input("'" + options.path + "' declares colour space '" + choice->name +
-                             "' (oiio:ColorSpace), which the " + config.source() +
-                             " OpenColorIO config does not know; pass --colorspace NAME");
-        return canonical.error();
-    }
-    if (!config.is_data(*canonical)) {
-        if (auto st = config.to_scene_linear(rgb, *canonical); !st) return st.error();
-    }
+    auto space = decide_image_colorspace(img, options.path, options.colorspace, "--colorspace", config);
+    if (!space) return space.error();
+    if (auto st = image_rgb_to_scene_linear(rgb, *space, config); !st) return st.error();
 
     LoadedColorMap out;
     out.map.vmin = options.vmin;
@@ -132,8 +93,8 @@ Expected<LoadedColorMap> load_color_map(const ColorMapLoadOptions& options,
     prov.image_width = img.width;
     prov.image_height = img.height;
     prov.selection = selection;
-    prov.colorspace = *canonical;
-    prov.colorspace_rule = choice->rule;
+    prov.colorspace = space->colorspace;
+    prov.colorspace_rule = space->rule;
     prov.linear_space = config.scene_linear_name();
     prov.ocio_config = config.source();
     return out;

@@ -1,7 +1,8 @@
 // Writes the inputs the command-line tests need, including the bad ones that
 // no image tool would write on purpose: a NaN texel, an Inf texel, a text
-// file named .png, an empty file, a 2-D grid, and an 8-bit ramp (plain, and
-// tagged gamma 2.2 the way a PNG gAMA chunk is).
+// file named .png, an empty file, a 2-D grid, an 8-bit ramp (plain, and
+// tagged gamma 2.2 the way a PNG gAMA chunk is), and a pair of float images
+// to compare (with HDR and negative values) plus one of another size.
 #include <OpenImageIO/imageio.h>
 
 #include <cmath>
@@ -53,6 +54,21 @@ int main(int argc, char** argv)
     }
     ok &= write(dir + "/ramp.png", 64, 1, 3, OIIO::TypeDesc::UINT8, ramp.data());
     ok &= write(dir + "/ramp-gamma22.png", 64, 1, 3, OIIO::TypeDesc::UINT8, ramp.data(), 2.2f);
+    std::vector<float> cmp_a(16 * 8 * 3), cmp_b(16 * 8 * 3);
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 16; ++x) {
+            float* a = &cmp_a[3 * (y * 16 + x)];
+            float* b = &cmp_b[3 * (y * 16 + x)];
+            a[0] = (x - 3) * 0.25f;
+            a[1] = y * 0.5f;
+            a[2] = static_cast<float>((x * 7 + y * 3) % 11) / 4.0f;
+            b[0] = a[0] + 0.01f * static_cast<float>(x % 3);
+            b[1] = a[1] - 0.2f * static_cast<float>(y % 2);
+            b[2] = a[2] * 1.5f;
+        }
+    ok &= write(dir + "/cmp-a.exr", 16, 8, 3, OIIO::TypeDesc::FLOAT, cmp_a.data());
+    ok &= write(dir + "/cmp-b.exr", 16, 8, 3, OIIO::TypeDesc::FLOAT, cmp_b.data());
+    ok &= write(dir + "/cmp-small.exr", 8, 8, 3, OIIO::TypeDesc::FLOAT, cmp_a.data());
     std::ofstream(dir + "/not-an-image.png") << "this is text, not a PNG\n";
     std::ofstream(dir + "/empty.png");
     return ok ? 0 : 1;

@@ -2,36 +2,17 @@
 // decisions, and bad input.
 #include "cmfilter/color_map_loading.h"
 
+#include "test_images.h"
 #include "unit_test_support.h"
 
-#include <OpenImageIO/imageio.h>
 #include <doctest/doctest.h>
 
-#include <filesystem>
-
 using namespace cmfilter;
-namespace fs = std::filesystem;
+using cmfilter_test::write_image;
 
 namespace {
 
-std::string temp_dir()
-{
-    const fs::path dir = fs::temp_directory_path() / "cmfilter-test-color-map-loading";
-    fs::create_directories(dir);
-    return dir.string();
-}
-
-void write_image(const std::string& path, int w, int h, int ch, OIIO::TypeDesc type, const void* data,
-                 const char* colorspace = nullptr)
-{
-    auto out = OIIO::ImageOutput::create(path);
-    REQUIRE(out);
-    OIIO::ImageSpec spec(w, h, ch, type);
-    if (colorspace) spec.attribute("colorInteropID", colorspace);
-    REQUIRE(out->open(path, spec));
-    REQUIRE(out->write_image(type, data));
-    REQUIRE(out->close());
-}
+std::string temp_dir() { return cmfilter_test::temp_dir("cmfilter-test-color-map-loading"); }
 
 }  // namespace
 

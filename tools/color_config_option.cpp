@@ -1,0 +1,17 @@
+// The OpenColorIO config a command uses: --ocio-config FILE, else $OCIO, else
+// the config built into libcmfilter.
+#include "command.h"
+
+#include <cstdlib>
+
+namespace cmfilter::cli {
+
+Expected<ColorConfig> load_color_config(const std::string& ocio_config_option)
+{
+    std::string path = ocio_config_option;
+    if (path.empty())
+        if (const char* env = std::getenv("OCIO"); env && *env) path = env;
+    return ColorConfig::load(path);
+}
+
+}  // namespace cmfilter::cli
