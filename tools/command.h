@@ -20,6 +20,7 @@ struct Command {
 };
 
 Command setup_bake_colormap(CLI::App& parent);
+Command setup_bake_moments(CLI::App& parent);
 Command setup_info(CLI::App& parent);
 
 // Splits "a:b" into two numbers; names the option and the text on failure.
