@@ -1,7 +1,9 @@
 // Writes the inputs the command-line tests need, including the bad ones that
 // no image tool would write on purpose: a NaN texel, an Inf texel, a text
 // file named .png, an empty file, a 2-D grid, and an 8-bit ramp (plain, and
-// tagged gamma 2.2 the way a PNG gAMA chunk is).
+// tagged gamma 2.2 the way a PNG gAMA chunk is); and drivers for
+// bake-moments: a non-power-of-two 8-bit grey one and a float one with two
+// NaN texels and one Inf texel.
 #include <OpenImageIO/imageio.h>
 
 #include <cmath>
@@ -53,6 +55,11 @@ int main(int argc, char** argv)
     }
     ok &= write(dir + "/ramp.png", 64, 1, 3, OIIO::TypeDesc::UINT8, ramp.data());
     ok &= write(dir + "/ramp-gamma22.png", 64, 1, 3, OIIO::TypeDesc::UINT8, ramp.data(), 2.2f);
+    std::vector<unsigned char> driver(37 * 23);
+    for (std::size_t i = 0; i < driver.size(); ++i) driver[i] = static_cast<unsigned char>((i * 53) % 256);
+    ok &= write(dir + "/driver-37x23.png", 37, 23, 1, OIIO::TypeDesc::UINT8, driver.data());
+    std::vector<float> nan_driver = {0.1f, 0.2f, NAN, 0.4f, 0.5f, INFINITY, 0.7f, 0.8f, 0.9f, NAN, 1.1f, 1.2f};
+    ok &= write(dir + "/driver-nan.exr", 4, 3, 1, OIIO::TypeDesc::FLOAT, nan_driver.data());
     std::ofstream(dir + "/not-an-image.png") << "this is text, not a PNG\n";
     std::ofstream(dir + "/empty.png");
     return ok ? 0 : 1;
