@@ -180,30 +180,30 @@ Expected<MomentBakeResult> bake_moment_pyramid(const MomentBakeOptions& options)
         // Level 0 and the horizontal box integrals of every row (parallel over rows).
         const int rows = y1 - y0;
         parallel_for(std::min(threads, rows), threads, [&](int t) {
-          for (int i = t; i < rows; i += threads) {
-            std::vector<double>& buf = work[t];
-            double* g1 = buf.data();
-            double* g2 = g1 + W;
-            double* p1 = g2 + W;
-            double* p2 = p1 + W + 1;
-            const float* src = f + static_cast<std::size_t>(y0 + i) * W;
-            float* dst = tile_row.data() + static_cast<std::size_t>(i) * W * 2;
-            p1[0] = p2[0] = 0;
-            for (int x = 0; x < W; ++x) {
-                const double d = static_cast<double>(src[x]) - c;
-                g1[x] = d;
-                g2[x] = d * d;
-                dst[2 * x] = static_cast<float>(d);
-                dst[2 * x + 1] = static_cast<float>(d * d);
-                p1[x + 1] = p1[x] + d;
-                p2[x + 1] = p2[x] + d * d;
+            for (int i = t; i < rows; i += threads) {
+                std::vector<double>& buf = work[t];
+                double* g1 = buf.data();
+                double* g2 = g1 + W;
+                double* p1 = g2 + W;
+                double* p2 = p1 + W + 1;
+                const float* src = f + static_cast<std::size_t>(y0 + i) * W;
+                float* dst = tile_row.data() + static_cast<std::size_t>(i) * W * 2;
+                p1[0] = p2[0] = 0;
+                for (int x = 0; x < W; ++x) {
+                    const double d = static_cast<double>(src[x]) - c;
+                    g1[x] = d;
+                    g2[x] = d * d;
+                    dst[2 * x] = static_cast<float>(d);
+                    dst[2 * x + 1] = static_cast<float>(d * d);
+                    p1[x + 1] = p1[x] + d;
+                    p2[x + 1] = p2[x] + d * d;
+                }
+                double* row = scratch.data() + static_cast<std::size_t>(i) * row_scratch;
+                for (std::size_t k = 0; k < upper.size(); ++k) {
+                    box_integrals(p1, g1, W, upper[k].w, row + offset[k]);
+                    box_integrals(p2, g2, W, upper[k].w, row + offset[k] + upper[k].w);
+                }
             }
-            double* row = scratch.data() + static_cast<std::size_t>(i) * row_scratch;
-            for (std::size_t k = 0; k < upper.size(); ++k) {
-                box_integrals(p1, g1, W, upper[k].w, row + offset[k]);
-                box_integrals(p2, g2, W, upper[k].w, row + offset[k] + upper[k].w);
-            }
-          }
         });
         // Vertical accumulation, rows in order within each level (parallel over levels).
         parallel_for(static_cast<int>(upper.size()), threads, [&](int k) {

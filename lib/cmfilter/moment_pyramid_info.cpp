@@ -1,5 +1,6 @@
 #include "cmfilter/moment_pyramid_info.h"
 
+#include "cmfilter/metadata.h"
 #include "cmfilter/version.h"
 
 #include <cmath>
@@ -20,9 +21,7 @@ void set_moment_pyramid_metadata(OIIO::ImageSpec& spec, const MomentPyramidInfo&
     spec.attribute("cmfilter:layout",
                    "level k is max(1, W >> k) x max(1, H >> k); texel (x, y) of level k is the "
                    "box mean over level-0 [x W / w_k, (x+1) W / w_k) x [y H / h_k, (y+1) H / h_k)");
-    const auto dbl = [&](const char* name, double v) {
-        spec.attribute(name, OIIO::TypeDesc::DOUBLE, &v);
-    };
+    const auto dbl = [&](const char* name, double v) { set_double_attribute(spec, name, v); };
     dbl("cmfilter:reference", info.reference);
     dbl("cmfilter:driver_min", info.driver_min);
     dbl("cmfilter:driver_max", info.driver_max);
@@ -50,12 +49,7 @@ Expected<MomentPyramidInfo> get_moment_pyramid_metadata(const OIIO::ImageSpec& s
         return bad_input("'" + path + "' has moment pyramid format version " +
                          std::to_string(version) + ", this cmfilter reads version " +
                          std::to_string(kMomentPyramidFormatVersion));
-    const auto dbl = [&](const char* name) {
-        const OIIO::ParamValue* p = spec.find_attribute(name);
-        if (!p) return std::nan("");
-        return p->type() == OIIO::TypeDesc::DOUBLE ? p->get<double>()
-                                                   : static_cast<double>(p->get_float());
-    };
+    const auto dbl = [&](const char* name) { return double_attribute(spec, name); };
     MomentPyramidInfo info;
     info.width = spec.width;
     info.height = spec.height;
