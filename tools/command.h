@@ -21,6 +21,7 @@ struct Command {
 };
 
 Command setup_bake_colormap(CLI::App& parent);
+Command setup_bake_moments(CLI::App& parent);
 Command setup_compare(CLI::App& parent);
 Command setup_info(CLI::App& parent);
 

@@ -2,6 +2,7 @@
 
 #include "cmfilter/gaussian_color_table_file.h"
 #include "cmfilter/image_reading.h"
+#include "cmfilter/moment_pyramid_info.h"
 
 #include <OpenImageIO/imageio.h>
 
@@ -17,6 +18,11 @@ std::string describe_kind(const std::string& kind, int width, int height)
         return "prefiltered colour-map table T(v, sigma) = (C0 * N(0, sigma^2))(v) (Heitz et al. "
                "2013, eq. 10): " + std::to_string(width) + " value nodes x " +
                std::to_string(height) + " sigma nodes, scene-linear RGB";
+    if (kind == kMomentPyramidKind)
+        return "moment pyramid of a driver f (Heitz et al. 2013, sec. 4.2): " +
+               std::to_string(width) + " x " + std::to_string(height) +
+               " level 0, tiled MIP-map; channels m1, m2 = box means of (f - c) and (f - c)^2 "
+               "about the reference value c; mean = c + m1, variance = max(0, m2 - m1^2)";
     return "cmfilter artefact of an unknown kind (made by a newer cmfilter?)";
 }
 

@@ -2,6 +2,7 @@
 
 #include "cmfilter/atomic_output.h"
 #include "cmfilter/image_reading.h"
+#include "cmfilter/metadata.h"
 #include "cmfilter/version.h"
 
 #include <OpenImageIO/imageio.h>
@@ -33,9 +34,7 @@ Status write_gaussian_color_table(const std::string& path, const GaussianColorTa
                    "T(v, sigma) = (C0 * N(0, sigma^2))(v), Heitz et al. 2013 eq. 10");
     spec.attribute("cmfilter:layout",
                    "columns = value nodes, rows = sigma nodes, row 0 = sigma 0; bilinear lookup");
-    const auto dbl = [&](const char* name, double v) {
-        spec.attribute(name, OIIO::TypeDesc::DOUBLE, &v);
-    };
+    const auto dbl = [&](const char* name, double v) { set_double_attribute(spec, name, v); };
     dbl("cmfilter:domain_min", ax.vmin);
     dbl("cmfilter:domain_max", ax.vmax);
     spec.attribute("cmfilter:wrap", to_string(ax.wrap));
@@ -91,12 +90,7 @@ Expected<LoadedGaussianColorTable> read_gaussian_color_table(const std::string& 
         return bad_input("'" + path + "' has table format version " + std::to_string(version) +
                          ", this cmfilter reads version " + std::to_string(kFormatVersion));
 
-    const auto dbl = [&](const char* name) {
-        const OIIO::ParamValue* p = spec.find_attribute(name);
-        if (!p) return std::nan("");
-        return p->type() == OIIO::TypeDesc::DOUBLE ? p->get<double>()
-                                                   : static_cast<double>(p->get_float());
-    };
+    const auto dbl = [&](const char* name) { return double_attribute(spec, name); };
     TableAxes ax;
     ax.values = spec.get_int_attribute("cmfilter:values", 0);
     ax.sigmas = spec.get_int_attribute("cmfilter:sigmas", 0);

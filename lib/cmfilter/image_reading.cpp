@@ -10,7 +10,8 @@ namespace fs = std::filesystem;
 
 namespace cmfilter {
 
-Expected<ImageData> read_image(const std::string& path)
+Expected<std::unique_ptr<OIIO::ImageInput>> open_image_input(const std::string& path,
+                                                             const OIIO::ImageSpec* config)
 {
     std::error_code ec;
     if (!fs::exists(path, ec)) return io_error("cannot read '" + path + "': no such file");
@@ -20,23 +21,32 @@ Expected<ImageData> read_image(const std::string& path)
     if (fs::file_size(path, ec) == 0)
         return bad_input("'" + path + "' is empty (0 bytes); expected an image");
 
-    auto in = OIIO::ImageInput::open(path);
+    auto in = OIIO::ImageInput::open(path, config);
     if (!in) {
         std::string why = OIIO::geterror();
         return bad_input("'" + path + "' is not an image OpenImageIO can read" +
                          (why.empty() ? std::string() : " (" + why + ")"));
     }
     const OIIO::ImageSpec& spec = in->spec();
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) {
+        std::ostringstream msg;
+        msg << "'" << path << "' has no pixels (" << spec.width << " x " << spec.height << ", "
+            << spec.nchannels << " channels); expected at least 1 x 1";
+        return bad_input(msg.str());
+    }
+    return Expected<std::unique_ptr<OIIO::ImageInput>>(std::move(in));
+}
+
+Expected<ImageData> read_image(const std::string& path)
+{
+    auto opened = open_image_input(path);
+    if (!opened) return opened.error();
+    auto& in = *opened;
+    const OIIO::ImageSpec& spec = in->spec();
     ImageData img;
     img.width = spec.width;
     img.height = spec.height;
     img.channels = spec.nchannels;
-    if (img.width <= 0 || img.height <= 0 || img.channels <= 0) {
-        std::ostringstream msg;
-        msg << "'" << path << "' has no pixels (" << img.width << " x " << img.height << ", "
-            << img.channels << " channels); expected at least 1 x 1";
-        return bad_input(msg.str());
-    }
     img.channel_names = spec.channelnames;
     img.format = in->format_name();
     img.pixel_type = spec.format.c_str();

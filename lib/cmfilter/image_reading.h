@@ -5,6 +5,9 @@
 
 #include "cmfilter/error.h"
 
+#include <OpenImageIO/imageio.h>
+
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -24,5 +27,11 @@ struct ImageData {
 };
 
 Expected<ImageData> read_image(const std::string& path);
+
+// Opens `path` for reading after the same checks: Io when it is missing, a
+// directory or unreadable; BadInput when it is empty, not an image, or has no
+// pixels. `config` (may be null) is passed to OpenImageIO's ImageInput::open.
+Expected<std::unique_ptr<OIIO::ImageInput>> open_image_input(const std::string& path,
+                                                             const OIIO::ImageSpec* config = nullptr);
 
 }  // namespace cmfilter

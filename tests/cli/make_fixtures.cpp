@@ -1,8 +1,10 @@
 // Writes the inputs the command-line tests need, including the bad ones that
 // no image tool would write on purpose: a NaN texel, an Inf texel, a text
 // file named .png, an empty file, a 2-D grid, an 8-bit ramp (plain, and
-// tagged gamma 2.2 the way a PNG gAMA chunk is), and a pair of float images
-// to compare (with HDR and negative values) plus one of another size.
+// tagged gamma 2.2 the way a PNG gAMA chunk is), a pair of float images to
+// compare (with HDR and negative values) plus one of another size; and drivers
+// for bake-moments: a non-power-of-two 8-bit grey one and a float one with two
+// NaN texels and one Inf texel.
 #include <OpenImageIO/imageio.h>
 
 #include <cmath>
@@ -69,6 +71,11 @@ int main(int argc, char** argv)
     ok &= write(dir + "/cmp-a.exr", 16, 8, 3, OIIO::TypeDesc::FLOAT, cmp_a.data());
     ok &= write(dir + "/cmp-b.exr", 16, 8, 3, OIIO::TypeDesc::FLOAT, cmp_b.data());
     ok &= write(dir + "/cmp-small.exr", 8, 8, 3, OIIO::TypeDesc::FLOAT, cmp_a.data());
+    std::vector<unsigned char> driver(37 * 23);
+    for (std::size_t i = 0; i < driver.size(); ++i) driver[i] = static_cast<unsigned char>((i * 53) % 256);
+    ok &= write(dir + "/driver-37x23.png", 37, 23, 1, OIIO::TypeDesc::UINT8, driver.data());
+    std::vector<float> nan_driver = {0.1f, 0.2f, NAN, 0.4f, 0.5f, INFINITY, 0.7f, 0.8f, 0.9f, NAN, 1.1f, 1.2f};
+    ok &= write(dir + "/driver-nan.exr", 4, 3, 1, OIIO::TypeDesc::FLOAT, nan_driver.data());
     std::ofstream(dir + "/not-an-image.png") << "this is text, not a PNG\n";
     std::ofstream(dir + "/empty.png");
     return ok ? 0 : 1;

@@ -1,0 +1,23 @@
+#include "cmfilter/texture_wrap.h"
+
+namespace cmfilter {
+
+const char* to_string(TextureWrap wrap)
+{
+    switch (wrap) {
+    case TextureWrap::Black: return "black";
+    case TextureWrap::Clamp: return "clamp";
+    case TextureWrap::Periodic: return "periodic";
+    }
+    return "clamp";
+}
+
+Expected<TextureWrap> parse_texture_wrap(const std::string& name)
+{
+    if (name == "black") return TextureWrap::Black;
+    if (name == "clamp") return TextureWrap::Clamp;
+    if (name == "periodic") return TextureWrap::Periodic;
+    return bad_input("unknown wrap mode '" + name + "' (expected black, clamp or periodic)");
+}
+
+}  // namespace cmfilter
