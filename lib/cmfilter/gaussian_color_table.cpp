@@ -101,6 +101,10 @@ Expected<TableAxes> make_table_axes(const ColorMap& map, const GaussianColorTabl
 GaussianColorTable::GaussianColorTable(TableAxes axes, std::vector<float> rgb)
     : axes_(axes), rgb_(std::move(rgb))
 {
+    value_scale_ = axes_.wrap == WrapMode::Repeat
+                       ? axes_.values / (axes_.vmax - axes_.vmin)
+                       : (axes_.values - 1) / (axes_.value_last() - axes_.value_first());
+    inv_sigma_max_ = 1.0 / axes_.sigma_max;
 }
 
 Expected<GaussianColorTable> GaussianColorTable::bake(const ColorMap& map,
@@ -185,33 +189,31 @@ Rgb GaussianColorTable::lookup(double mean, double sigma, LookupCounters* counte
     }
 
     // Row coordinate (sigma < 0 is treated as 0; beyond sigma_max clamps).
-    double s = std::max(0.0, sigma);
-    if (s > ax.sigma_max) {
+    double t = std::max(0.0, sigma) * inv_sigma_max_;
+    if (t > 1.0) {
         ++count.sigma_clamped;
-        s = ax.sigma_max;
+        t = 1.0;
     }
-    double t = s / ax.sigma_max;
     if (ax.spacing == SigmaSpacing::Sqrt) t = std::sqrt(t);
     const double y = t * (ax.sigmas - 1);
 
     // Column coordinate, following the wrap rule beyond the axis.
     double x;
     int i0, i1;
-    const double period = ax.vmax - ax.vmin;
     if (ax.wrap == WrapMode::Repeat) {
-        x = wrap_coordinate(mean - ax.vmin, period, WrapMode::Repeat) / period * ax.values;
+        const double period = ax.vmax - ax.vmin;
+        x = wrap_coordinate(mean - ax.vmin, period, WrapMode::Repeat) * value_scale_;
         i0 = std::min(static_cast<int>(x), ax.values - 1);
-        i1 = (i0 + 1) % ax.values;
+        i1 = i0 + 1 == ax.values ? 0 : i0 + 1;
     } else {
         double v = mean;
         if (ax.wrap == WrapMode::Mirror) {
-            v = ax.vmin + wrap_coordinate(mean - ax.vmin, period, WrapMode::Mirror);
-        } else if (v < ax.value_first() || v > ax.value_last()) {
+            v = ax.vmin + wrap_coordinate(mean - ax.vmin, ax.vmax - ax.vmin, WrapMode::Mirror);
+        } else if (!(v >= ax.value_first() && v <= ax.value_last())) {
             ++count.value_clamped;
             v = std::clamp(v, ax.value_first(), ax.value_last());
         }
-        x = (v - ax.value_first()) / (ax.value_last() - ax.value_first()) * (ax.values - 1);
-        x = std::clamp(x, 0.0, static_cast<double>(ax.values - 1));
+        x = std::clamp((v - ax.value_first()) * value_scale_, 0.0, static_cast<double>(ax.values - 1));
         i0 = std::min(static_cast<int>(x), ax.values - 2);
         i1 = i0 + 1;
     }
@@ -219,9 +221,16 @@ Rgb GaussianColorTable::lookup(double mean, double sigma, LookupCounters* counte
     const int j0 = std::min(static_cast<int>(y), ax.sigmas - 2);
     const double fy = y - j0;
 
-    const Rgb c00 = node(i0, j0), c10 = node(i1, j0), c01 = node(i0, j0 + 1),
-              c11 = node(i1, j0 + 1);
-    return (1 - fy) * ((1 - fx) * c00 + fx * c10) + fy * ((1 - fx) * c01 + fx * c11);
+    const float* row0 = rgb_.data() + static_cast<std::size_t>(j0) * ax.values * 3;
+    const float* row1 = row0 + static_cast<std::size_t>(ax.values) * 3;
+    const float *a = row0 + 3 * i0, *b = row0 + 3 * i1, *c = row1 + 3 * i0, *d = row1 + 3 * i1;
+    double out[3];
+    for (int ch = 0; ch < 3; ++ch) {
+        const double top = a[ch] + fx * (double{b[ch]} - a[ch]);
+        const double bottom = c[ch] + fx * (double{d[ch]} - c[ch]);
+        out[ch] = top + fy * (bottom - top);
+    }
+    return {out[0], out[1], out[2]};
 }
 
 }  // namespace cmfilter

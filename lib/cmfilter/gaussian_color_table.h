@@ -81,6 +81,9 @@ public:
 private:
     TableAxes axes_;
     std::vector<float> rgb_;
+    // Lookup constants, from the axes: column = (v - value_first) value_scale
+    // (clamp, mirror) or (v - vmin) value_scale (repeat); row = t (M - 1).
+    double value_scale_ = 0, inv_sigma_max_ = 0;
 };
 
 // Resolves defaults and checks ranges, naming the offending value.
