@@ -22,6 +22,8 @@
 #include "cmfilter/error.h"
 #include "cmfilter/texture_wrap.h"
 
+#include <OpenImageIO/imageio.h>
+
 #include <memory>
 #include <string>
 #include <vector>
@@ -45,7 +47,16 @@ struct HistogramPyramidInfo {
     std::string source;
     std::string source_sha256;
     std::size_t nonfinite_replaced = 0;
+    std::string baked_by;        // cmfilter version (filled in on read)
 };
+
+// The cmfilter:* attributes of a histogram pyramid (and the "wrapmodes"
+// TextureSystem reads), set on the level-0 spec being written / read back.
+// Reading gives BadInput naming `path` when the file is not a histogram
+// pyramid or its metadata is inconsistent with its channels.
+void set_histogram_pyramid_metadata(OIIO::ImageSpec& spec, const HistogramPyramidInfo& info);
+Expected<HistogramPyramidInfo> get_histogram_pyramid_metadata(const OIIO::ImageSpec& spec,
+                                                              const std::string& path);
 
 struct HistogramBakeOptions {
     std::string driver_path;

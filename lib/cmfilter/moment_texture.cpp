@@ -2,6 +2,7 @@
 
 #include "cmfilter/image_reading.h"
 #include "cmfilter/moment_pyramid.h"
+#include "cmfilter/texture_lod.h"
 
 #include <OpenImageIO/texture.h>
 
@@ -52,37 +53,12 @@ MomentSample MomentTexture::finish(bool ok, const float m[2]) const
 
 int MomentTexture::reachable_levels() const
 {
-    int k = 0;
-    while (k + 1 < info_.levels && std::min(moment_level_extent(info_.width, k),
-                                            moment_level_extent(info_.height, k)) > 1)
-        ++k;
-    return k + 1;
+    return reachable_texture_levels(info_.width, info_.height, info_.levels);
 }
 
 MomentSample MomentTexture::lookup(float s, float t, float lod) const
 {
-    // TextureSystem (OpenImageIO 2.4, trilinear) picks levels from the filter
-    // width fw in texture units: at level m it takes fw_m = fw * min(w_m, h_m)
-    // and, at the first m with fw_m <= 1, blends level m - 1 with weight
-    // 1 - (2 fw_m - 1) and level m with weight 2 fw_m - 1 (checked by
-    // tests/unit/test_moment_texture.cpp). So fw = 1 / min(w_k, h_k) reads
-    // level k alone, and fw = (1 + frac) / (2 min(w_k+1, h_k+1)) blends levels
-    // k and k + 1 with weights 1 - frac and frac: linear in lod.
-    const int top = reachable_levels() - 1;
-    lod = std::isfinite(lod) ? std::clamp(lod, 0.0f, static_cast<float>(top)) : 0.0f;
-    const int k = static_cast<int>(std::floor(lod));
-    const float frac = lod - static_cast<float>(k);
-    const auto minwh = [&](int level) {
-        return static_cast<float>(std::min(moment_level_extent(info_.width, level),
-                                           moment_level_extent(info_.height, level)));
-    };
-    float fw;
-    if (frac > 0) {
-        fw = (1.0f + frac) / (2.0f * minwh(k + 1));
-    } else {
-        fw = 1.0f / minwh(k);
-        if (fw * minwh(k) > 1.0f) fw = std::nextafter(fw, 0.0f);  // stay on level k
-    }
+    const float fw = texture_lod(info_.width, info_.height, info_.levels, lod).filter_width;
     OIIO::TextureOpt opt;
     opt.interpmode = OIIO::TextureOpt::InterpBilinear;
     opt.mipmode = OIIO::TextureOpt::MipModeTrilinear;
