@@ -20,6 +20,7 @@ struct Command {
     std::function<Status()> run;
 };
 
+Command setup_apply(CLI::App& parent);
 Command setup_bake_colormap(CLI::App& parent);
 Command setup_bake_moments(CLI::App& parent);
 Command setup_compare(CLI::App& parent);
@@ -27,6 +28,9 @@ Command setup_info(CLI::App& parent);
 
 // Splits "a:b" into two numbers; names the option and the text on failure.
 Expected<std::pair<double, double>> parse_range(const std::string& option, const std::string& text);
+
+// Splits "WxH" into two integers in 1..65536; names the option and the text on failure.
+Expected<std::pair<int, int>> parse_size(const std::string& option, const std::string& text);
 
 // The OpenColorIO config named by --ocio-config (empty: $OCIO if set, else
 // the built-in config).

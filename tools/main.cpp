@@ -19,7 +19,7 @@ int main(int argc, char** argv)
                "Run 'cmfilter <command> --help' for a command's options.");
 
     std::vector<cli::Command> commands = {cli::setup_bake_colormap(app), cli::setup_bake_moments(app),
-                                          cli::setup_compare(app),
+                                          cli::setup_apply(app), cli::setup_compare(app),
                                           cli::setup_info(app)};
 
     auto prefix = [&]() {

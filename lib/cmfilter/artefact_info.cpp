@@ -1,5 +1,6 @@
 #include "cmfilter/artefact_info.h"
 
+#include "cmfilter/filtered_image_file.h"
 #include "cmfilter/gaussian_color_table_file.h"
 #include "cmfilter/image_reading.h"
 #include "cmfilter/moment_pyramid_info.h"
@@ -23,6 +24,9 @@ std::string describe_kind(const std::string& kind, int width, int height)
                std::to_string(width) + " x " + std::to_string(height) +
                " level 0, tiled MIP-map; channels m1, m2 = box means of (f - c) and (f - c)^2 "
                "about the reference value c; mean = c + m1, variance = max(0, m2 - m1^2)";
+    if (kind == kFilteredImageKind)
+        return "filtered colour image of a colour-mapped driver (cmfilter apply): " +
+               std::to_string(width) + " x " + std::to_string(height) + " RGB";
     return "cmfilter artefact of an unknown kind (made by a newer cmfilter?)";
 }
 

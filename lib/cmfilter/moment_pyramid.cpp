@@ -1,14 +1,13 @@
 #include "cmfilter/moment_pyramid.h"
 
 #include "cmfilter/atomic_output.h"
-#include "cmfilter/parallel_for.h"
+#include "cmfilter/box_pyramid.h"
 #include "cmfilter/sha256.h"
 
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <chrono>
-#include <cstdint>
 #include <future>
 #include <vector>
 
@@ -23,75 +22,11 @@ double ms_since(Clock::time_point t0)
     return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
-// Horizontal box integrals of one level-0 row g (piecewise constant, texel i
-// spanning [i, i+1)) for a level w texels wide: out[x] is the integral of g
-// over [x W / w, (x+1) W / w). prefix[i] = g[0] + ... + g[i-1], i = 0..W.
-// Boundaries are kept as exact rationals num / w.
-void box_integrals(const double* prefix, const double* g, int W, int w, double* out)
-{
-    const auto integral_to = [&](std::int64_t num) {
-        const std::int64_t i = num / w;
-        if (i >= W) return prefix[W];
-        return prefix[i] + g[i] * static_cast<double>(num % w) / w;
-    };
-    double prev = 0;
-    for (int x = 0; x < w; ++x) {
-        const double next = integral_to(static_cast<std::int64_t>(x + 1) * W);
-        out[x] = next - prev;
-        prev = next;
-    }
-}
-
-// One upper level being accumulated from level-0 rows in order. Level-0 row r
-// spans [r, r+1), output row y spans [y H / h, (y+1) H / h); in units of 1/h
-// these are [r h, (r+1) h) and [y H, (y+1) H), so overlaps are exact integers.
-// Since h <= H a level-0 row touches at most two output rows.
-struct UpperLevel {
-    int w = 0, h = 0;
-    std::vector<float> texels;   // w * h * 2: (m1, m2) per texel, top row first
-    std::vector<double> acc1, acc2;
-    int y = 0;                   // output row being accumulated
-
-    void add_row(int r, int H, double inv_area, const double* h1, const double* h2)
-    {
-        std::int64_t lo = static_cast<std::int64_t>(r) * h;
-        const std::int64_t hi = lo + h;
-        while (lo < hi) {
-            const std::int64_t end = static_cast<std::int64_t>(y + 1) * H;
-            const std::int64_t seg = std::min(hi, end);
-            const double weight = static_cast<double>(seg - lo) / h;  // in level-0 rows
-            for (int x = 0; x < w; ++x) {
-                acc1[x] += weight * h1[x];
-                acc2[x] += weight * h2[x];
-            }
-            lo = seg;
-            if (seg == end) {  // output row y is complete: divide by its area
-                float* out = texels.data() + static_cast<std::size_t>(y) * w * 2;
-                for (int x = 0; x < w; ++x) {
-                    out[2 * x] = static_cast<float>(acc1[x] * inv_area);
-                    out[2 * x + 1] = static_cast<float>(acc2[x] * inv_area);
-                }
-                std::fill(acc1.begin(), acc1.end(), 0.0);
-                std::fill(acc2.begin(), acc2.end(), 0.0);
-                ++y;
-            }
-        }
-    }
-};
-
 }  // namespace
 
-int moment_level_extent(int extent, int level)
-{
-    return level >= 31 ? 1 : std::max(1, extent >> level);
-}
+int moment_level_extent(int extent, int level) { return box_level_extent(extent, level); }
 
-int moment_level_count(int width, int height)
-{
-    int levels = 1;
-    for (int e = std::max(width, height); e > 1; e >>= 1) ++levels;
-    return levels;
-}
+int moment_level_count(int width, int height) { return box_level_count(width, height); }
 
 Expected<MomentBakeResult> bake_moment_pyramid(const MomentBakeOptions& options)
 {
@@ -153,65 +88,27 @@ Expected<MomentBakeResult> bake_moment_pyramid(const MomentBakeOptions& options)
     if (!writer->open(out->temp_path(), spec)) return write_failed();
 
     // Upper levels, accumulated while level 0 streams past.
-    std::vector<UpperLevel> upper(info.levels - 1);
-    std::vector<std::size_t> offset(upper.size() + 1, 0);  // of each level in a row's scratch
-    for (std::size_t k = 0; k < upper.size(); ++k) {
-        UpperLevel& L = upper[k];
-        L.w = moment_level_extent(W, static_cast<int>(k) + 1);
-        L.h = moment_level_extent(H, static_cast<int>(k) + 1);
-        L.texels.assign(static_cast<std::size_t>(L.w) * L.h * 2, 0.0f);
-        L.acc1.assign(L.w, 0.0);
-        L.acc2.assign(L.w, 0.0);
-        offset[k + 1] = offset[k] + 2 * static_cast<std::size_t>(L.w);
-    }
-    const std::size_t row_scratch = offset.back();
-
+    BoxPyramidAccumulator upper(W, H, 2, options.threads);
     const double c = info.reference;
     const int tile = options.tile_size;
     std::vector<float> tile_row(static_cast<std::size_t>(W) * tile * 2);
-    std::vector<double> scratch(row_scratch * tile);
-    const int threads = resolve_thread_count(options.threads);
-    std::vector<std::vector<double>> work(threads, std::vector<double>(4 * static_cast<std::size_t>(W) + 2));
     const float* f = driver->values.data();
 
     for (int y0 = 0; y0 < H; y0 += tile) {
         const int y1 = std::min(H, y0 + tile);
         auto t_build = Clock::now();
-        // Level 0 and the horizontal box integrals of every row (parallel over rows).
-        const int rows = y1 - y0;
-        parallel_for(std::min(threads, rows), threads, [&](int t) {
-            for (int i = t; i < rows; i += threads) {
-                std::vector<double>& buf = work[t];
-                double* g1 = buf.data();
-                double* g2 = g1 + W;
-                double* p1 = g2 + W;
-                double* p2 = p1 + W + 1;
-                const float* src = f + static_cast<std::size_t>(y0 + i) * W;
-                float* dst = tile_row.data() + static_cast<std::size_t>(i) * W * 2;
-                p1[0] = p2[0] = 0;
-                for (int x = 0; x < W; ++x) {
-                    const double d = static_cast<double>(src[x]) - c;
-                    g1[x] = d;
-                    g2[x] = d * d;
-                    dst[2 * x] = static_cast<float>(d);
-                    dst[2 * x + 1] = static_cast<float>(d * d);
-                    p1[x + 1] = p1[x] + d;
-                    p2[x + 1] = p2[x] + d * d;
-                }
-                double* row = scratch.data() + static_cast<std::size_t>(i) * row_scratch;
-                for (std::size_t k = 0; k < upper.size(); ++k) {
-                    box_integrals(p1, g1, W, upper[k].w, row + offset[k]);
-                    box_integrals(p2, g2, W, upper[k].w, row + offset[k] + upper[k].w);
-                }
-            }
-        });
-        // Vertical accumulation, rows in order within each level (parallel over levels).
-        parallel_for(static_cast<int>(upper.size()), threads, [&](int k) {
-            UpperLevel& L = upper[k];
-            const double inv_area = static_cast<double>(L.w) * L.h / (static_cast<double>(W) * H);
-            for (int r = y0; r < y1; ++r) {
-                const double* row = scratch.data() + static_cast<std::size_t>(r - y0) * row_scratch + offset[k];
-                L.add_row(r, H, inv_area, row, row + L.w);
+        // Level 0 (into the tile row) and the channels f - c, (f - c)^2 of every row.
+        upper.add_rows(y0, y1, [&](int y, int, double* planes) {
+            const float* src = f + static_cast<std::size_t>(y) * W;
+            float* dst = tile_row.data() + static_cast<std::size_t>(y - y0) * W * 2;
+            double* g1 = planes;
+            double* g2 = planes + W;
+            for (int x = 0; x < W; ++x) {
+                const double d = static_cast<double>(src[x]) - c;
+                g1[x] = d;
+                g2[x] = d * d;
+                dst[2 * x] = static_cast<float>(d);
+                dst[2 * x + 1] = static_cast<float>(d * d);
             }
         });
         result.build_ms += ms_since(t_build);
@@ -224,16 +121,15 @@ Expected<MomentBakeResult> bake_moment_pyramid(const MomentBakeOptions& options)
     driver->values = {};  // the upper levels are complete; the driver is no longer needed
 
     auto t_write = Clock::now();
-    for (std::size_t k = 0; k < upper.size(); ++k) {
-        UpperLevel& L = upper[k];
+    for (int k = 1; k < upper.levels(); ++k) {
         OIIO::ImageSpec level = spec;
-        level.width = level.full_width = L.w;
-        level.height = level.full_height = L.h;
+        level.width = level.full_width = upper.level_width(k);
+        level.height = level.full_height = upper.level_height(k);
+        const std::vector<float> texels = upper.take_level(k);
         if (!writer->open(out->temp_path(), level, OIIO::ImageOutput::AppendMIPLevel) ||
-            !writer->write_image(OIIO::TypeDesc::FLOAT, L.texels.data()))
+            !writer->write_image(OIIO::TypeDesc::FLOAT, texels.data()))
             return write_failed();
-        L.texels = {};
-        progress(0.9 + 0.1 * (k + 1) / upper.size());
+        progress(0.9 + 0.1 * k / (upper.levels() - 1));
     }
     if (!writer->close()) return write_failed();
     result.write_ms += ms_since(t_write);

@@ -4,7 +4,10 @@
 // tagged gamma 2.2 the way a PNG gAMA chunk is), a pair of float images to
 // compare (with HDR and negative values) plus one of another size; and drivers
 // for bake-moments: a non-power-of-two 8-bit grey one and a float one with two
-// NaN texels and one Inf texel.
+// NaN texels and one Inf texel; for apply, a 32 x 32 float driver reaching
+// a little beyond [0, 1], a float (linear) 8-texel colour map with its values
+// also as oiiotool --colormap knots in a text file, and a driver entirely
+// outside [0, 1].
 #include <OpenImageIO/imageio.h>
 
 #include <cmath>
@@ -76,6 +79,25 @@ int main(int argc, char** argv)
     ok &= write(dir + "/driver-37x23.png", 37, 23, 1, OIIO::TypeDesc::UINT8, driver.data());
     std::vector<float> nan_driver = {0.1f, 0.2f, NAN, 0.4f, 0.5f, INFINITY, 0.7f, 0.8f, 0.9f, NAN, 1.1f, 1.2f};
     ok &= write(dir + "/driver-nan.exr", 4, 3, 1, OIIO::TypeDesc::FLOAT, nan_driver.data());
+    std::vector<float> apply_driver(32 * 32);
+    for (int y = 0; y < 32; ++y)
+        for (int x = 0; x < 32; ++x)  // smooth waves plus texel-scale detail, in [-0.1, 1.1]
+            apply_driver[y * 32 + x] = static_cast<float>(
+                0.5 + 0.35 * std::sin(0.4 * x + 0.1 * y) + 0.25 * std::cos(1.7 * x * y + 0.3 * y));
+    ok &= write(dir + "/apply-driver.exr", 32, 32, 1, OIIO::TypeDesc::FLOAT, apply_driver.data());
+    const std::vector<float> apply_map = {0.02f, 0.05f, 0.4f,  0.9f, 0.1f, 0.05f, 0.1f,  0.8f,
+                                          0.2f,  2.5f,  2.2f,  0.3f, 0.0f, 0.0f,  0.0f,  0.6f,
+                                          0.6f,  0.6f,  0.05f, 0.9f, 0.3f, 1.0f,  0.95f, 0.9f};
+    ok &= write(dir + "/apply-map.exr", 8, 1, 3, OIIO::TypeDesc::FLOAT, apply_map.data());
+    {
+        std::ofstream knots(dir + "/apply-map-knots.txt");
+        knots.precision(9);
+        for (std::size_t i = 0; i < apply_map.size(); ++i) knots << (i ? "," : "") << apply_map[i];
+        knots << "\n";
+    }
+    std::vector<float> far_driver(4 * 4);
+    for (std::size_t i = 0; i < far_driver.size(); ++i) far_driver[i] = 5.0f + 0.0625f * i;
+    ok &= write(dir + "/apply-driver-far.exr", 4, 4, 1, OIIO::TypeDesc::FLOAT, far_driver.data());
     std::ofstream(dir + "/not-an-image.png") << "this is text, not a PNG\n";
     std::ofstream(dir + "/empty.png");
     return ok ? 0 : 1;
