@@ -4,6 +4,7 @@
 #include "command.h"
 
 #include "cmfilter/atomic_output.h"
+#include "cmfilter/histogram_pyramid.h"
 #include "cmfilter/moment_pyramid.h"
 
 #include <nlohmann/json.hpp>
@@ -11,6 +12,8 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdio>
+#include <optional>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -22,6 +25,7 @@ namespace {
 struct BakeMomentsArgs {
     std::string driver_path;
     std::string output;
+    std::string histograms;
     std::string channel;
     std::string wrap = "clamp";
     std::string nan = "error";
@@ -33,6 +37,8 @@ struct BakeMomentsArgs {
 Status run(const BakeMomentsArgs& args)
 {
     if (auto st = check_output_path(args.output, ".exr"); !st) return st;
+    if (!args.histograms.empty())
+        if (auto st = check_output_path(args.histograms, ".exr"); !st) return st;
     auto wrap = parse_texture_wrap(args.wrap);
     if (!wrap) return wrap.error();
     auto nan = parse_non_finite_policy(args.nan);
@@ -55,9 +61,25 @@ Status run(const BakeMomentsArgs& args)
                       << std::flush;
         };
     const auto t0 = std::chrono::steady_clock::now();
+    // The histogram pyramid first: it is the one refused for a driver with
+    // too many distinct values, and then neither file is written.
+    std::optional<HistogramPyramidInfo> histograms;
+    if (!args.histograms.empty()) {
+        HistogramBakeOptions h;
+        h.driver_path = args.driver_path;
+        h.output_path = args.histograms;
+        h.channel = args.channel;
+        h.nonfinite = *nan;
+        h.wrap = *wrap;
+        h.threads = args.threads;
+        auto baked = bake_histogram_pyramid(h);
+        if (!baked) return baked.error();
+        histograms = std::move(*baked);
+    }
     auto baked = bake_moment_pyramid(options);
     if (!baked) {
         if (progress) std::cerr << "\n";
+        if (histograms) std::remove(args.histograms.c_str());  // all or nothing
         return baked.error();
     }
     const double total_ms =
@@ -77,6 +99,7 @@ Status run(const BakeMomentsArgs& args)
         j["nonfinite_replaced"] = info.nonfinite_replaced;
         j["source"] = info.source;
         j["source_sha256"] = info.source_sha256;
+        if (histograms) j["histograms"] = {{"output", args.histograms}, {"values", histograms->values}};
         j["time_ms"] = {{"read", baked->read_ms}, {"build", baked->build_ms},
                         {"write", baked->write_ms}, {"total", total_ms}};
         std::cout << j.dump(2) << "\n";
@@ -89,6 +112,9 @@ Status run(const BakeMomentsArgs& args)
                   << "  reference  c = " << info.reference
                   << " (channels: mean of f - c, mean of (f - c)^2)\n"
                   << "  wrap       " << to_string(info.wrap) << "\n";
+        if (histograms)
+            std::cout << "  histograms " << args.histograms << ": " << histograms->values.size()
+                      << " distinct values (exact method)\n";
         if (info.nonfinite_replaced > 0)
             std::cout << "  non-finite " << info.nonfinite_replaced << " texels replaced by 0\n";
         std::cout << std::setprecision(3) << "  time       read " << baked->read_ms << " ms, build "
@@ -109,6 +135,9 @@ Command setup_bake_moments(CLI::App& parent)
                     "Driver texture: any image OpenImageIO reads, used as data (no colour conversion)")
         ->required();
     app->add_option("-o,--output", args->output, "Moment pyramid to write (.exr)")->required();
+    app->add_option("--histograms", args->histograms,
+                    "Also write the driver's histogram pyramid (.exr) for apply --method exact "
+                    "(at most 256 distinct values)");
     app->add_option("--channel", args->channel,
                     "Driver channel, by name or 0-based index (required for multi-channel images)");
     app->add_option("--wrap", args->wrap, "Lookups beyond the edges: black, clamp or periodic")

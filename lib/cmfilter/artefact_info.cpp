@@ -2,6 +2,7 @@
 
 #include "cmfilter/filtered_image_file.h"
 #include "cmfilter/gaussian_color_table_file.h"
+#include "cmfilter/histogram_pyramid.h"
 #include "cmfilter/image_reading.h"
 #include "cmfilter/moment_pyramid_info.h"
 
@@ -24,6 +25,11 @@ std::string describe_kind(const std::string& kind, int width, int height)
                std::to_string(width) + " x " + std::to_string(height) +
                " level 0, tiled MIP-map; channels m1, m2 = box means of (f - c) and (f - c)^2 "
                "about the reference value c; mean = c + m1, variance = max(0, m2 - m1^2)";
+    if (kind == kHistogramPyramidKind)
+        return "histogram pyramid of a driver with few distinct values (Heitz et al. 2013, sec. "
+               "4.1, exact solutions): " + std::to_string(width) + " x " + std::to_string(height) +
+               " level 0, tiled MIP-map; channel b = fraction of the footprint where f = v_b "
+               "(cmfilter:values)";
     if (kind == kFilteredImageKind)
         return "filtered colour image of a colour-mapped driver (cmfilter apply): " +
                std::to_string(width) + " x " + std::to_string(height) + " RGB";

@@ -8,8 +8,10 @@
 #include "cmfilter/filtered_image.h"
 #include "cmfilter/filtered_image_file.h"
 #include "cmfilter/gaussian_color_table_file.h"
+#include "cmfilter/histogram_pyramid.h"
 #include "cmfilter/moment_pyramid.h"
 
+#include "box_reference.h"
 #include "reference_convolution.h"
 #include "test_images.h"
 #include "unit_test_support.h"
@@ -77,25 +79,16 @@ FilteredImage apply(ApplyOptions options, FilterMethod method, double lod)
     return *r;
 }
 
-double overlap(double a, double b, int i) { return std::max(0.0, std::min(b, i + 1.0) - std::max(a, double(i))); }
-
-// Brute force from docs/moments-format.md: the mean of C0(f) over the level-0
-// rectangle [x W / w, (x+1) W / w) x [y H / h, (y+1) H / h), area-weighted.
+// Brute force (tests/support/box_reference.h): the mean of C0(f) over
+// texel (x, y) of a w x h level, area-weighted.
 Rgb3 box_mean_color(const ReferenceMap& m, const std::vector<float>& f, int W, int H, int w, int h,
                     int x, int y)
 {
-    const double x0 = double(x) * W / w, x1 = double(x + 1) * W / w;
-    const double y0 = double(y) * H / h, y1 = double(y + 1) * H / h;
     Rgb3 sum{0, 0, 0};
-    double area = 0;
-    for (int j = int(std::floor(y0)); j < std::min(H, int(std::ceil(y1))); ++j)
-        for (int i = int(std::floor(x0)); i < std::min(W, int(std::ceil(x1))); ++i) {
-            const double a = overlap(x0, x1, i) * overlap(y0, y1, j);
-            const Rgb3 c = reference_map_value(m, f[std::size_t(j) * W + i]);
-            for (int ch = 0; ch < 3; ++ch) sum[ch] += a * c[ch];
-            area += a;
-        }
-    for (double& v : sum) v /= area;
+    for (const auto& b : box_weights(W, H, w, h, x, y)) {
+        const Rgb3 c = reference_map_value(m, f[std::size_t(b.j) * W + b.i]);
+        for (int ch = 0; ch < 3; ++ch) sum[ch] += b.weight * c[ch];
+    }
     return sum;
 }
 
@@ -135,6 +128,41 @@ TEST_CASE("apply reference equals brute-force box means of C0(f), 13 x 7 driver"
                   return box_mean_color(m, f, W, H, img.width, img.height, x, y);
               }) <= 1e-6);
     }
+}
+
+TEST_CASE("apply exact equals brute-force box means of C0(f) for a driver with few values")
+{
+    // Three distinct values, 11 x 6 (not a power of two), including one
+    // outside the map's domain (clamped by C0): the histogram pyramid's inner
+    // product with the map must give the box mean of C0(f) at every level
+    // and, at a fractional lod, the same linear blend as the reference.
+    const int W = 11, H = 6;
+    const float values[3] = {0.125f, 0.7f, 1.25f};
+    std::vector<float> f(W * H);
+    for (int i = 0; i < W * H; ++i) f[i] = values[(i * 7 + i / W) % 3];
+    ApplyOptions options = inputs("exact", f, W, H, {});
+    HistogramBakeOptions bake;
+    bake.driver_path = kDir + "/exact-driver.exr";
+    bake.output_path = options.histograms_path = kDir + "/exact-histograms.exr";
+    auto baked = bake_histogram_pyramid(bake);
+    REQUIRE(baked);
+    REQUIRE(baked->values.size() == 3);
+    const ReferenceMap m = reference_map();
+    for (int k = 0; k <= 2; ++k) {
+        CAPTURE(k);
+        const FilteredImage img = apply(options, FilterMethod::Exact, k);
+        // Fractions stored as float32 (2^-24 relative) times colours up to
+        // 2.5, summed over 3 values: below 1e-6.
+        CHECK(worst_error(img, [&](int x, int y) {
+                  return box_mean_color(m, f, W, H, img.width, img.height, x, y);
+              }) <= 1e-6);
+    }
+    const FilteredImage exact = apply(options, FilterMethod::Exact, 0.5);
+    const FilteredImage reference = apply(options, FilterMethod::Reference, 0.5);
+    REQUIRE(exact.rgb.size() == reference.rgb.size());
+    double worst = 0;
+    for (std::size_t i = 0; i < exact.rgb.size(); ++i) worst = std::max(worst, double(std::abs(exact.rgb[i] - reference.rgb[i])));
+    CHECK(worst <= 1e-6);
 }
 
 TEST_CASE("apply gaussian is T(mean, sigma) of eq. 10 and naive is C0(mean), on table nodes")

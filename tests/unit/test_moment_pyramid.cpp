@@ -7,6 +7,8 @@
 #include "cmfilter/moment_pyramid.h"
 #include "cmfilter/moment_texture.h"
 
+#include "box_reference.h"
+
 #include <OpenImageIO/imageio.h>
 #include <doctest/doctest.h>
 
@@ -82,27 +84,17 @@ MomentBakeResult bake(const std::string& driver, const std::string& output)
     return *r;
 }
 
-// Length of [a, b) inside texel [i, i + 1).
-double overlap(double a, double b, int i) { return std::max(0.0, std::min(b, i + 1.0) - std::max(a, double(i))); }
-
-// Brute force, straight from the definition in docs/moments-format.md: the
-// mean of g = (f - c)^power over the level-0 rectangle
-// [x W / w, (x+1) W / w) x [y H / h, (y+1) H / h), texels weighted by the
-// area they cover, summed in double.
+// Brute force (tests/support/box_reference.h): the box mean of
+// g = (f - c)^power over texel (x, y) of a w x h level, summed in double.
 double box_mean(const std::vector<float>& f, int W, int H, int w, int h, int x, int y, double c,
                 int power)
 {
-    const double x0 = double(x) * W / w, x1 = double(x + 1) * W / w;
-    const double y0 = double(y) * H / h, y1 = double(y + 1) * H / h;
-    double sum = 0, area = 0;
-    for (int j = int(std::floor(y0)); j < std::min(H, int(std::ceil(y1))); ++j)
-        for (int i = int(std::floor(x0)); i < std::min(W, int(std::ceil(x1))); ++i) {
-            const double a = overlap(x0, x1, i) * overlap(y0, y1, j);
-            const double d = double(f[std::size_t(j) * W + i]) - c;
-            sum += a * (power == 1 ? d : d * d);
-            area += a;
-        }
-    return sum / area;
+    double sum = 0;
+    for (const auto& b : cmfilter_test::box_weights(W, H, w, h, x, y)) {
+        const double d = double(f[std::size_t(b.j) * W + b.i]) - c;
+        sum += b.weight * (power == 1 ? d : d * d);
+    }
+    return sum;
 }
 
 double level_extent(int e, int k) { return std::max(1, e >> k); }
