@@ -6,6 +6,7 @@
 #include "cmfilter/sha256.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <future>
 #include <vector>
 
@@ -61,7 +62,12 @@ Expected<HistogramPyramidInfo> bake_histogram_pyramid(const HistogramBakeOptions
     file.name = options.output_path;
     file.width = W;
     file.height = H;
-    for (int b = 0; b < B; ++b) file.channel_names.push_back("h" + std::to_string(b));
+    // OpenEXR stores channels sorted by name: zero-padded names keep bin order.
+    for (int b = 0; b < B; ++b) {
+        char name[16];
+        std::snprintf(name, sizeof name, "h%03d", b);
+        file.channel_names.push_back(name);
+    }
     file.tile_size = options.tile_size;
     file.compression = options.compression;
     file.threads = options.threads;

@@ -11,7 +11,8 @@
 // The file is a tiled, mip-mapped float32 OpenEXR with the same level
 // geometry as a moment pyramid (docs/moments-format.md: level k is
 // max(1, W >> k) x max(1, H >> k), exact box means for any size), channels
-// "h0", "h1", ... and the distinct values in the cmfilter:* metadata. Its cost
+// "h000", "h001", ... (zero-padded: OpenEXR sorts channels by name) and the
+// distinct values in the cmfilter:* metadata. Its cost
 // is B float32 channels per texel for B distinct values: 4 B x 4/3 bytes per
 // driver texel over all levels (for a 2048 x 2048 driver with 16 values,
 // 358 MB on disk before compression; with 256 values, 5.7 GB), which is why

@@ -47,7 +47,9 @@ HistogramPyramidInfo bake(const std::string& name, const std::vector<float>& f, 
 
 TEST_CASE("histogram pyramid levels hold the fraction of each footprint at each value, any size")
 {
-    const std::vector<float> values = {-0.5f, 0.25f, 0.3f, 7.0f};
+    // Twelve values: more than ten bins, so that bin order must survive
+    // OpenEXR's sorting of channels by name.
+    const std::vector<float> values = {-0.5f, 0.25f, 0.3f, 7.0f, 1.0f, 2.0f, 3.0f, 4.0f, 5.0f, 6.0f, 8.0f, 9.0f};
     for (auto [W, H] : std::vector<std::pair<int, int>>{{16, 16}, {5, 3}, {23, 9}, {1, 6}}) {
         CAPTURE(W);
         CAPTURE(H);
