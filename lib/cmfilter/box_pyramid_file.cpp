@@ -3,10 +3,24 @@
 #include "cmfilter/box_pyramid.h"
 
 #include <algorithm>
+#include <chrono>
+#include <future>
 
 namespace cmfilter {
 
-Status write_box_pyramid_file(const BoxPyramidFileOptions& options, const BoxPyramidRowFill& fill)
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point t0)
+{
+    return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+}  // namespace
+
+Expected<BoxPyramidFileTimes> write_box_pyramid_file(const BoxPyramidFileOptions& options,
+                                                     const BoxPyramidRowFill& fill)
 {
     const int W = options.width, H = options.height;
     const int C = static_cast<int>(options.channel_names.size());
@@ -26,40 +40,65 @@ Status write_box_pyramid_file(const BoxPyramidFileOptions& options, const BoxPyr
     if (!writer) return runtime_error("OpenImageIO cannot write EXR: " + OIIO::geterror());
     if (!writer->supports("mipmap") || !writer->supports("tiles"))
         return runtime_error("OpenImageIO's EXR writer cannot write tiled MIP-maps");
-    const auto write_failed = [&]() -> Status {
+    const auto write_failed = [&]() -> Error {
         return io_error("cannot write '" + options.name + "': " + writer->geterror());
     };
     if (!writer->open(options.path, spec)) return write_failed();
 
+    BoxPyramidFileTimes times;
     BoxPyramidAccumulator upper(W, H, C, options.threads);
     const int tile = options.tile_size;
-    std::vector<float> tile_row(static_cast<std::size_t>(W) * tile * C);
-    for (int y0 = 0; y0 < H; y0 += tile) {
+    const int tile_rows = std::min(tile, H);
+    std::vector<float> level0[2];
+    for (auto& b : level0) b.resize(static_cast<std::size_t>(W) * tile_rows * C);
+    std::future<bool> pending;  // the tile row being written
+    const auto wait_pending = [&]() {
+        if (!pending.valid()) return true;
+        const auto t = Clock::now();
+        const bool ok = pending.get();
+        times.write_ms += ms_since(t);  // the time the build waited for the writer
+        return ok;
+    };
+    for (int y0 = 0, n = 0; y0 < H; y0 += tile, n ^= 1) {
         const int y1 = std::min(H, y0 + tile);
+        float* rows = level0[n].data();
+        const auto t = Clock::now();
         upper.add_rows(y0, y1, [&](int y, int thread, double* planes) {
             fill(y, thread, planes);
-            float* dst = tile_row.data() + static_cast<std::size_t>(y - y0) * W * C;
-            for (int c = 0; c < C; ++c)
-                for (int x = 0; x < W; ++x)
-                    dst[static_cast<std::size_t>(x) * C + c] = static_cast<float>(planes[static_cast<std::size_t>(c) * W + x]);
+            float* dst = rows + static_cast<std::size_t>(y - y0) * W * C;
+            for (int c = 0; c < C; ++c) {
+                const double* src = planes + static_cast<std::size_t>(c) * W;
+                for (int x = 0; x < W; ++x) dst[static_cast<std::size_t>(x) * C + c] = static_cast<float>(src[x]);
+            }
         });
-        if (!writer->write_tiles(0, W, y0, y1, 0, 1, OIIO::TypeDesc::FLOAT, tile_row.data()))
-            return write_failed();
-        progress(0.9 * y1 / H);
+        times.build_ms += ms_since(t);
+        // The previous row must be out before this one is handed over (one
+        // writer, rows in order); its buffer is the one the next row fills.
+        if (!wait_pending()) return write_failed();
+        pending = std::async(std::launch::async, [&writer, W, y0, y1, rows]() {
+            return writer->write_tiles(0, W, y0, y1, 0, 1, OIIO::TypeDesc::FLOAT, rows);
+        });
+        progress(0.9 * y0 / H);
     }
+    if (!wait_pending()) return write_failed();
+    for (auto& b : level0) b = {};
+
+    const auto t = Clock::now();
     for (int k = 1; k < upper.levels(); ++k) {
         OIIO::ImageSpec level = spec;
         level.width = level.full_width = upper.level_width(k);
         level.height = level.full_height = upper.level_height(k);
         const std::vector<float> texels = upper.take_level(k);
+        // The whole level in one call: fewer waits for a call's last tiles.
         if (!writer->open(options.path, level, OIIO::ImageOutput::AppendMIPLevel) ||
-            !writer->write_image(OIIO::TypeDesc::FLOAT, texels.data()))
+            !writer->write_tiles(0, level.width, 0, level.height, 0, 1, OIIO::TypeDesc::FLOAT, texels.data()))
             return write_failed();
         progress(0.9 + 0.1 * k / (upper.levels() - 1));
     }
     if (!writer->close()) return write_failed();
+    times.write_ms += ms_since(t);
     progress(1.0);
-    return ok();
+    return times;
 }
 
 }  // namespace cmfilter

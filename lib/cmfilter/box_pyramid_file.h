@@ -2,8 +2,13 @@
 // OpenEXR that OpenImageIO's TextureSystem reads: level 0 streamed tile row
 // by tile row as the caller fills its rows, every upper level accumulated
 // from the same rows and appended at the end. Shared by the pyramids whose
-// channels are box means of per-texel functions of the driver (histogram
-// pyramids: indicator functions).
+// channels are box means of per-texel functions of the driver: moment
+// pyramids ((f - c), (f - c)^2) and histogram pyramids (indicators).
+//
+// Each level-0 tile row is handed to a writer thread (OpenEXR compresses a
+// call's tiles on its own thread pool) while the next row is computed; two
+// row buffers alternate. Compression dominates the time
+// (docs/benchmarks.md), so this overlap is what there is to win.
 #pragma once
 
 #include "cmfilter/error.h"
@@ -33,6 +38,12 @@ struct BoxPyramidFileOptions {
 // rows; thread is 0 .. threads-1.
 using BoxPyramidRowFill = std::function<void(int y, int thread, double* planes)>;
 
-Status write_box_pyramid_file(const BoxPyramidFileOptions& options, const BoxPyramidRowFill& fill);
+struct BoxPyramidFileTimes {
+    double build_ms = 0;  // filling rows and accumulating the upper levels
+    double write_ms = 0;  // waiting for the writer: encoding and writing
+};
+
+Expected<BoxPyramidFileTimes> write_box_pyramid_file(const BoxPyramidFileOptions& options,
+                                                     const BoxPyramidRowFill& fill);
 
 }  // namespace cmfilter

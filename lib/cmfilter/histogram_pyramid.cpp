@@ -75,7 +75,7 @@ Expected<HistogramPyramidInfo> bake_histogram_pyramid(const HistogramBakeOptions
     // Level 0: the indicator of each texel's value, [f == v_b]; box means of
     // it are the discretised D_f of sec. 4.1 ("exact solutions"), and the
     // filtered colour is the inner product of eq. 8 over the v_b.
-    const Status written = write_box_pyramid_file(file, [&](int y, int, double* planes) {
+    const auto written = write_box_pyramid_file(file, [&](int y, int, double* planes) {
         std::fill(planes, planes + static_cast<std::size_t>(B) * W, 0.0);
         const unsigned char* row = bin.data() + static_cast<std::size_t>(y) * W;
         for (int x = 0; x < W; ++x) planes[static_cast<std::size_t>(row[x]) * W + x] = 1.0;

@@ -12,8 +12,9 @@
 // level-0 rectangle [x W / w_k, (x+1) W / w_k) x [y H / h_k, (y+1) H / h_k),
 // fractional texels weighted by the part covered, for any size
 // (docs/moments-format.md). The driver is held once in memory as float; level
-// 0 is written tile row by tile row while every upper level is accumulated
-// from the same rows, so the peak is about 1.7 driver copies.
+// 0 is written tile row by tile row, encoded on a writer thread while the
+// next row is computed, and every upper level is accumulated from the same
+// rows, so the peak is about 1.7 driver copies.
 #pragma once
 
 #include "cmfilter/driver_image.h"
@@ -42,7 +43,8 @@ struct MomentBakeResult {
     MomentPyramidInfo info;
     double read_ms = 0;   // decode the driver, scan it for non-finite texels and statistics
     double build_ms = 0;  // compute the moments of every level
-    double write_ms = 0;  // encode and write the tiles (compression included)
+    double write_ms = 0;  // encode and write the tiles (compression included) beyond
+                          // what overlaps the build: read + build + write is the total
 };
 
 Expected<MomentBakeResult> bake_moment_pyramid(const MomentBakeOptions& options);

@@ -17,4 +17,11 @@ std::string sha256_hex(const void* data, std::size_t size);
 // An Io error naming the path if the file cannot be opened or read.
 Expected<std::string> sha256_file_hex(const std::string& path);
 
+namespace detail {
+// For tests: the digest computed without the processor's SHA instructions, and
+// which block computation sha256_hex uses ("x86-sha" or "portable").
+std::string sha256_hex_portable(const void* data, std::size_t size);
+const char* sha256_implementation();
+}  // namespace detail
+
 }  // namespace cmfilter

@@ -47,6 +47,23 @@ TEST_CASE("sha256: FIPS 180-4 example digests")
           "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
 }
 
+TEST_CASE("sha256: the SHA-instruction and portable block computations agree")
+{
+    // sha256_hex uses the processor's SHA instructions where it has them; the
+    // portable computation must give the same digests, in one call and fed in
+    // pieces that split blocks anywhere (lengths across the padding boundary
+    // and several blocks).
+    MESSAGE("block computation in use: " << std::string(detail::sha256_implementation()));
+    std::string bytes(4099, '\0');
+    for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<char>((i * 7919 + (i >> 5)) & 0xff);
+    CHECK(detail::sha256_hex_portable("abc", 3) ==
+          "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+    for (std::size_t n : {0u, 1u, 55u, 56u, 63u, 64u, 65u, 127u, 128u, 129u, 1000u, 4099u}) {
+        INFO("length " << n);
+        CHECK(sha256_hex(bytes.data(), n) == detail::sha256_hex_portable(bytes.data(), n));
+    }
+}
+
 TEST_CASE("sha256: file digests match the one-shot digest and the system sha256sum")
 {
     // Lengths around the padding boundary (55 bytes still fit the 64-bit length
