@@ -1,9 +1,12 @@
 #include "cmfilter/driver_image.h"
 
+#include "cmfilter/sha256.h"
+
 #include "cmfilter/image_reading.h"
 #include "cmfilter/parallel_for.h"
 
 #include <algorithm>
+#include <future>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -137,6 +140,17 @@ Expected<DriverImage> read_driver(const DriverReadOptions& options)
     d.min = total.min;
     d.max = total.max;
     return d;
+}
+
+Expected<HashedDriver> read_driver_and_hash(const DriverReadOptions& options)
+{
+    // The hash reads the file a second time; do it beside the decode.
+    auto hash = std::async(std::launch::async, sha256_file_hex, options.path);
+    auto driver = read_driver(options);
+    auto digest = hash.get();
+    if (!driver) return driver.error();
+    if (!digest) return digest.error();
+    return HashedDriver{std::move(*driver), std::move(*digest)};
 }
 
 }  // namespace cmfilter

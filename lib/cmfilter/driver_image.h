@@ -45,4 +45,12 @@ struct DriverImage {
 
 Expected<DriverImage> read_driver(const DriverReadOptions& options);
 
+// read_driver, and the SHA-256 of the file's bytes (computed beside the
+// decode) for the cmfilter:source_sha256 of what is baked from it.
+struct HashedDriver {
+    DriverImage image;
+    std::string sha256;
+};
+Expected<HashedDriver> read_driver_and_hash(const DriverReadOptions& options);
+
 }  // namespace cmfilter

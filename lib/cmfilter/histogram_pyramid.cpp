@@ -3,11 +3,9 @@
 #include "cmfilter/atomic_output.h"
 #include "cmfilter/box_pyramid.h"
 #include "cmfilter/box_pyramid_file.h"
-#include "cmfilter/sha256.h"
 
 #include <algorithm>
 #include <cstdio>
-#include <future>
 #include <vector>
 
 namespace cmfilter {
@@ -18,16 +16,15 @@ Expected<HistogramPyramidInfo> bake_histogram_pyramid(const HistogramBakeOptions
         return bad_input("tile size " + std::to_string(options.tile_size) + " is invalid (expected >= 1)");
     auto out = AtomicOutput::begin(options.output_path);
     if (!out) return out.error();
-    auto hash = std::async(std::launch::async, sha256_file_hex, options.driver_path);
     DriverReadOptions read;
     read.path = options.driver_path;
     read.channel = options.channel;
     read.nonfinite = options.nonfinite;
     read.threads = options.threads;
-    auto driver = read_driver(read);
-    if (!driver) return driver.error();
-    auto digest = hash.get();
-    if (!digest) return digest.error();
+    auto hashed = read_driver_and_hash(read);
+    if (!hashed) return hashed.error();
+    DriverImage* driver = &hashed->image;
+    const std::string* digest = &hashed->sha256;
 
     // The distinct values v_b, ascending, and each texel's bin.
     std::vector<float> values = driver->values;

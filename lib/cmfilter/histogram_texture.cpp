@@ -16,18 +16,11 @@ Expected<HistogramTexture> HistogramTexture::open(const std::string& path)
     if (!in) return in.error();
     auto info = get_histogram_pyramid_metadata((*in)->spec(), path);
     if (!info) return info.error();
-    int levels = 0;
-    while ((*in)->seek_subimage(0, levels)) ++levels;
-    if (levels != info->levels || (*in)->spec(0, 0).tile_width <= 0)
-        return bad_input("'" + path + "' is not a tiled MIP-map with the " +
-                         std::to_string(info->levels) + " levels its metadata names (found " +
-                         std::to_string(levels) + ")");
+    if (auto st = check_tiled_mipmap(**in, info->levels, path); !st) return st.error();
     HistogramTexture tex;
     tex.path_ = path;
     tex.info_ = *info;
-    // A private TextureSystem, so that its cache and options are ours alone.
-    tex.ts_.reset(OIIO::TextureSystem::create(false),
-                  [](OIIO::TextureSystem* ts) { OIIO::TextureSystem::destroy(ts, true); });
+    tex.ts_ = make_private_texture_system();
     return tex;
 }
 

@@ -35,8 +35,6 @@ Expected<MomentBakeResult> bake_moment_pyramid(const MomentBakeOptions& options)
         return bad_input("tile size " + std::to_string(options.tile_size) + " is invalid (expected >= 1)");
     auto out = AtomicOutput::begin(options.output_path);
     if (!out) return out.error();
-    // The source hash reads the file a second time; do it beside the decode.
-    auto hash = std::async(std::launch::async, sha256_file_hex, options.driver_path);
     MomentBakeResult result;
     auto t0 = Clock::now();
     DriverReadOptions read;
@@ -44,10 +42,10 @@ Expected<MomentBakeResult> bake_moment_pyramid(const MomentBakeOptions& options)
     read.channel = options.channel;
     read.nonfinite = options.nonfinite;
     read.threads = options.threads;
-    auto driver = read_driver(read);
-    if (!driver) return driver.error();
-    auto digest = hash.get();
-    if (!digest) return digest.error();
+    auto hashed = read_driver_and_hash(read);
+    if (!hashed) return hashed.error();
+    DriverImage* driver = &hashed->image;
+    const std::string* digest = &hashed->sha256;
     result.read_ms = ms_since(t0);
 
     const int W = driver->width, H = driver->height;

@@ -2,10 +2,29 @@
 
 #include "cmfilter/moment_pyramid.h"
 
+#include <OpenImageIO/texture.h>
+
 #include <algorithm>
 #include <cmath>
 
 namespace cmfilter {
+
+Status check_tiled_mipmap(OIIO::ImageInput& in, int levels, const std::string& path)
+{
+    int found = 0;
+    while (in.seek_subimage(0, found)) ++found;
+    if (found != levels || in.spec(0, 0).tile_width <= 0)
+        return bad_input("'" + path + "' is not a tiled MIP-map with the " + std::to_string(levels) +
+                         " levels its metadata names (found " + std::to_string(found) + ")");
+    return ok();
+}
+
+std::shared_ptr<OIIO::TextureSystem> make_private_texture_system()
+{
+    return std::shared_ptr<OIIO::TextureSystem>(
+        OIIO::TextureSystem::create(false),
+        [](OIIO::TextureSystem* ts) { OIIO::TextureSystem::destroy(ts, true); });
+}
 
 int reachable_texture_levels(int width, int height, int levels)
 {

@@ -1,11 +1,30 @@
 // How cmfilter's pyramids (moment and histogram pyramids, same level
 // geometry) are looked up at a level of detail through OpenImageIO's
-// TextureSystem: which levels it can reach, and the isotropic filter width
-// that makes its trilinear mode read exactly level lod (integer lod) or blend
-// levels floor(lod) and floor(lod) + 1 linearly in lod.
+// TextureSystem: which levels it can reach, the isotropic filter width that
+// makes its trilinear mode read exactly level lod (integer lod) or blend
+// levels floor(lod) and floor(lod) + 1 linearly in lod, and opening one.
 #pragma once
 
+#include "cmfilter/error.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <memory>
+#include <string>
+
+namespace OIIO_NAMESPACE {
+class TextureSystem;
+}
+
 namespace cmfilter {
+
+// BadInput naming `path` unless the opened file is a tiled MIP-map with
+// exactly `levels` levels (as its metadata names).
+Status check_tiled_mipmap(OIIO::ImageInput& in, int levels, const std::string& path);
+
+// A TextureSystem of the caller's own, so that its cache and options are
+// nobody else's; destroyed with its last owner.
+std::shared_ptr<OIIO::TextureSystem> make_private_texture_system();
 
 // Levels TextureSystem can select for a pyramid of `levels` levels over a
 // width x height level 0: it sizes filters by the smaller side of each level,
