@@ -4,6 +4,8 @@
 // mean of C0(f)); EXR in scene-linear, PNG/JPEG in sRGB.
 #include "command.h"
 
+#include "cmfilter/stopwatch.h"
+
 #include "cmfilter/filtered_image.h"
 #include "cmfilter/filtered_image_file.h"
 
@@ -53,7 +55,7 @@ Status run(ApplyArgs args)
             last = percent;
             std::cerr << "\rapply: " << percent << "%" << (percent == 100 ? "\n" : "") << std::flush;
         };
-    const auto t0 = std::chrono::steady_clock::now();
+    const Stopwatch t0;
     auto image = apply_filter(args.options, *config);
     if (!image) {
         if (progress) std::cerr << "\n";
@@ -61,7 +63,7 @@ Status run(ApplyArgs args)
     }
     if (auto st = write_filtered_image(args.output, *image, *config); !st) return st;
     const double total_ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        t0.elapsed_ms();
     for (const std::string& w : image->warnings) std::cerr << "cmfilter apply: warning: " << w << "\n";
 
     const FilteredImage& r = *image;

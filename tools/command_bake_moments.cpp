@@ -3,6 +3,8 @@
 // MIP-mapped EXR that OpenImageIO's TextureSystem reads.
 #include "command.h"
 
+#include "cmfilter/stopwatch.h"
+
 #include "cmfilter/atomic_output.h"
 #include "cmfilter/histogram_pyramid.h"
 #include "cmfilter/moment_pyramid.h"
@@ -60,7 +62,7 @@ Status run(const BakeMomentsArgs& args)
             std::cerr << "\rbake-moments: " << percent << "%" << (percent == 100 ? "\n" : "")
                       << std::flush;
         };
-    const auto t0 = std::chrono::steady_clock::now();
+    const Stopwatch t0;
     // The histogram pyramid first: it is the one refused for a driver with
     // too many distinct values, and then neither file is written.
     std::optional<HistogramPyramidInfo> histograms;
@@ -83,7 +85,7 @@ Status run(const BakeMomentsArgs& args)
         return baked.error();
     }
     const double total_ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        t0.elapsed_ms();
     const MomentPyramidInfo& info = baked->info;
 
     if (args.json) {

@@ -1,23 +1,12 @@
 #include "cmfilter/box_pyramid_file.h"
 
 #include "cmfilter/box_pyramid.h"
+#include "cmfilter/stopwatch.h"
 
 #include <algorithm>
-#include <chrono>
 #include <future>
 
 namespace cmfilter {
-
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point t0)
-{
-    return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
-
-}  // namespace
 
 Expected<BoxPyramidFileTimes> write_box_pyramid_file(const BoxPyramidFileOptions& options,
                                                      const BoxPyramidRowFill& fill)
@@ -54,15 +43,15 @@ Expected<BoxPyramidFileTimes> write_box_pyramid_file(const BoxPyramidFileOptions
     std::future<bool> pending;  // the tile row being written
     const auto wait_pending = [&]() {
         if (!pending.valid()) return true;
-        const auto t = Clock::now();
+        const Stopwatch t;
         const bool ok = pending.get();
-        times.write_ms += ms_since(t);  // the time the build waited for the writer
+        times.write_ms += t.elapsed_ms();  // the time the build waited for the writer
         return ok;
     };
     for (int y0 = 0, n = 0; y0 < H; y0 += tile, n ^= 1) {
         const int y1 = std::min(H, y0 + tile);
         float* rows = level0[n].data();
-        const auto t = Clock::now();
+        const Stopwatch t;
         upper.add_rows(y0, y1, [&](int y, int thread, double* planes) {
             fill(y, thread, planes);
             float* dst = rows + static_cast<std::size_t>(y - y0) * W * C;
@@ -71,7 +60,7 @@ Expected<BoxPyramidFileTimes> write_box_pyramid_file(const BoxPyramidFileOptions
                 for (int x = 0; x < W; ++x) dst[static_cast<std::size_t>(x) * C + c] = static_cast<float>(src[x]);
             }
         });
-        times.build_ms += ms_since(t);
+        times.build_ms += t.elapsed_ms();
         // The previous row must be out before this one is handed over (one
         // writer, rows in order); its buffer is the one the next row fills.
         if (!wait_pending()) return write_failed();
@@ -83,7 +72,7 @@ Expected<BoxPyramidFileTimes> write_box_pyramid_file(const BoxPyramidFileOptions
     if (!wait_pending()) return write_failed();
     for (auto& b : level0) b = {};
 
-    const auto t = Clock::now();
+    const Stopwatch t;
     for (int k = 1; k < upper.levels(); ++k) {
         OIIO::ImageSpec level = spec;
         level.width = level.full_width = upper.level_width(k);
@@ -96,7 +85,7 @@ Expected<BoxPyramidFileTimes> write_box_pyramid_file(const BoxPyramidFileOptions
         progress(0.9 + 0.1 * k / (upper.levels() - 1));
     }
     if (!writer->close()) return write_failed();
-    times.write_ms += ms_since(t);
+    times.write_ms += t.elapsed_ms();
     progress(1.0);
     return times;
 }

@@ -3,27 +3,16 @@
 #include "cmfilter/atomic_output.h"
 #include "cmfilter/box_pyramid.h"
 #include "cmfilter/box_pyramid_file.h"
+#include "cmfilter/stopwatch.h"
 #include "cmfilter/sha256.h"
 
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
-#include <chrono>
 #include <future>
 #include <vector>
 
 namespace cmfilter {
-
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point t0)
-{
-    return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
-
-}  // namespace
 
 int moment_level_extent(int extent, int level) { return box_level_extent(extent, level); }
 
@@ -36,7 +25,7 @@ Expected<MomentBakeResult> bake_moment_pyramid(const MomentBakeOptions& options)
     auto out = AtomicOutput::begin(options.output_path);
     if (!out) return out.error();
     MomentBakeResult result;
-    auto t0 = Clock::now();
+    const Stopwatch t0;
     DriverReadOptions read;
     read.path = options.driver_path;
     read.channel = options.channel;
@@ -46,7 +35,7 @@ Expected<MomentBakeResult> bake_moment_pyramid(const MomentBakeOptions& options)
     if (!hashed) return hashed.error();
     DriverImage* driver = &hashed->image;
     const std::string* digest = &hashed->sha256;
-    result.read_ms = ms_since(t0);
+    result.read_ms = t0.elapsed_ms();
 
     const int W = driver->width, H = driver->height;
     MomentPyramidInfo& info = result.info;
