@@ -70,11 +70,7 @@ double GradientNoise::operator()(double x, double y, double z) const
     auto corner = [&](int a, int b, int c) {
         return dot_gradient_3d(hash_(i + a, j + b, k + c), dx - a, dy - b, dz - c);
     };
-    const double x00 = lerp(u, corner(0, 0, 0), corner(1, 0, 0));
-    const double x10 = lerp(u, corner(0, 1, 0), corner(1, 1, 0));
-    const double x01 = lerp(u, corner(0, 0, 1), corner(1, 0, 1));
-    const double x11 = lerp(u, corner(0, 1, 1), corner(1, 1, 1));
-    return lerp(w, lerp(v, x00, x10), lerp(v, x01, x11));
+    return blend_cell_corners(u, v, w, corner);
 }
 
 }  // namespace cmfilter

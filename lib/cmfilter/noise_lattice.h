@@ -48,6 +48,18 @@ inline int lattice_index(double floored_x)
 
 inline double lerp(double t, double a, double b) { return a + t * (b - a); }
 
+// Blends corner(a, b, c), a, b, c in {0, 1}, of a lattice cell with the faded
+// fractions (u, v, w): the trilinear step both 3-D lattice noises share.
+template <typename Corner>
+double blend_cell_corners(double u, double v, double w, Corner&& corner)
+{
+    const double x00 = lerp(u, corner(0, 0, 0), corner(1, 0, 0));
+    const double x10 = lerp(u, corner(0, 1, 0), corner(1, 1, 0));
+    const double x01 = lerp(u, corner(0, 0, 1), corner(1, 0, 1));
+    const double x11 = lerp(u, corner(0, 1, 1), corner(1, 1, 1));
+    return lerp(w, lerp(v, x00, x10), lerp(v, x01, x11));
+}
+
 // Perlin's improved fade (2002): 6t^5 - 15t^4 + 10t^3, C2 across lattice cells.
 inline double quintic_fade(double t) { return t * t * t * (t * (t * 6.0 - 15.0) + 10.0); }
 

@@ -19,11 +19,7 @@ double ValueNoise::operator()(double x, double y, double z) const
     const int i = lattice_index(fx), j = lattice_index(fy), k = lattice_index(fz);
     const double u = quintic_fade(x - fx), v = quintic_fade(y - fy), w = quintic_fade(z - fz);
     auto value = [&](int a, int b, int c) { return lattice_value(hash_(i + a, j + b, k + c)); };
-    const double x00 = lerp(u, value(0, 0, 0), value(1, 0, 0));
-    const double x10 = lerp(u, value(0, 1, 0), value(1, 1, 0));
-    const double x01 = lerp(u, value(0, 0, 1), value(1, 0, 1));
-    const double x11 = lerp(u, value(0, 1, 1), value(1, 1, 1));
-    return lerp(w, lerp(v, x00, x10), lerp(v, x01, x11));
+    return blend_cell_corners(u, v, w, value);
 }
 
 }  // namespace cmfilter
