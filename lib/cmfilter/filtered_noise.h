@@ -1,0 +1,35 @@
+// A procedural noise filtered over a footprint of width w (sec. 4.2): the two
+// parameters of the Gaussian filtering distribution N(mean, sigma^2) that the
+// colour-map table T(mean, sigma) is looked up with:
+//   mean  = FractalNoise::mean_over_footprint(x, y, w): resolved octaves kept,
+//           finer ones faded to their mean (fractal_noise.h);
+//   sigma = the plugged-in NoiseSigmaTable at LOD log2(w / base period): the
+//           standard deviation the footprint leaves unresolved.
+#pragma once
+
+#include "cmfilter/fractal_noise.h"
+#include "cmfilter/noise_sigma_table.h"
+
+#include <cmath>
+#include <utility>
+
+namespace cmfilter {
+
+class FilteredNoise {
+public:
+    FilteredNoise(FractalNoise noise, NoiseSigmaTable table) : noise_(std::move(noise)), table_(std::move(table)) {}
+
+    double mean_over_footprint(double x, double y, double w) const { return noise_.mean_over_footprint(x, y, w); }
+    double unresolved_sigma(double w) const { return table_.sigma_at(lod(w)); }
+    // LOD of a footprint of width w: log2(w / base period); -inf for w = 0.
+    double lod(double w) const { return std::log2(w / noise_.base_period()); }
+
+    const FractalNoise& noise() const { return noise_; }
+    const NoiseSigmaTable& table() const { return table_; }
+
+private:
+    FractalNoise noise_;
+    NoiseSigmaTable table_;
+};
+
+}  // namespace cmfilter

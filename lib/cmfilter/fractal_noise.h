@@ -1,0 +1,86 @@
+// Fractal sums over any 2-D base noise n of base period p_0 (Musgrave,
+// "Texturing and Modeling", ch. 16; Perlin 1985 for turbulence):
+//     fBm:         f(x) = sum_{i<N} gain^i n(lacunarity^i x + s_i)
+//     turbulence:  f(x) = sum_{i<N} gain^i |n(lacunarity^i x + s_i)|
+// Octave i has period p_i = p_0 / lacunarity^i. Each octave's domain is shifted
+// by s_i, drawn from the fractal's seed (uniform over 256 x 256 units), so the
+// octaves sample unrelated parts of the base noise and decorrelate even when
+// lacunarity is an integer and the base lattice repeats.
+// Turbulence is not Gaussian (a folded, skewed sum): a stress case for the
+// Gaussian filtering of sec. 4.2.
+//
+// Filtered evaluation over a footprint of width w (docs/noise.md): octave i
+// keeps the fraction a_i(w) of its own value and fades the rest to the octave
+// mean mu (the base mean for fBm, the base mean of |n| for turbulence):
+//     mean_w(x) = sum_i gain^i (a_i(w) t_i(x) + (1 - a_i(w)) mu)
+//     a_i(w) = 1 - smoothstep(log2(w / p_i) + 1),  smoothstep(s) = 3s^2 - 2s^3 on [0, 1],
+// so an octave is whole while w <= p_i / 2, gone once w >= p_i (where a box of
+// width w averages a wave of period p_i to nothing), and fades smoothly (C1
+// in w) between: no popping across LOD.
+#pragma once
+
+#include "cmfilter/error.h"
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace cmfilter {
+
+// A base noise and the statistics the filtered evaluation fades to.
+struct BaseNoise {
+    std::function<double(double, double)> evaluate;
+    double period = 1.0;    // p_0, in noise coordinates
+    double mean = 0.0;      // E[n]: 0 for every built-in noise
+    double mean_abs = 0.0;  // E[|n|]: turbulence octaves fade to it
+};
+
+// E[|n|] measured by jittered-stratified sampling: samples_per_axis^2 points,
+// one per cell of a grid over the square [0, 256 period)^2 (one whole period of
+// the lattice noises), from a fixed generator: deterministic.
+double measure_mean_abs(const std::function<double(double, double)>& evaluate, double period,
+                        int samples_per_axis = 256);
+
+enum class FractalSum { Fbm, Turbulence };
+const char* to_string(FractalSum sum);
+
+struct FractalOptions {
+    int octaves = 6;          // N >= 1
+    double lacunarity = 2.0;  // > 1
+    double gain = 0.5;        // > 0
+    FractalSum sum = FractalSum::Fbm;
+};
+
+class FractalNoise {
+public:
+    // Validates the options and the base period, naming the bad value.
+    static Expected<FractalNoise> create(BaseNoise base, const FractalOptions& options, std::uint64_t seed);
+
+    double operator()(double x, double y) const;
+
+    // The unweighted term of octave i: n or |n| at the octave's point.
+    double octave(int i, double x, double y) const;
+    double octave_period(int i) const { return periods_[static_cast<std::size_t>(i)]; }
+    double octave_amplitude(int i) const { return amplitudes_[static_cast<std::size_t>(i)]; }
+    // What an octave fades to: the base mean (fBm) or mean |n| (turbulence).
+    double octave_mean() const;
+    // a_i(w): the fraction of octave i a footprint of width w still resolves.
+    double resolved_fraction(int i, double w) const;
+
+    // The mean over a footprint of width w (noise units) centred at (x, y).
+    double mean_over_footprint(double x, double y, double w) const;
+
+    const BaseNoise& base() const { return base_; }
+    const FractalOptions& options() const { return options_; }
+    double base_period() const { return base_.period; }
+
+private:
+    FractalNoise() = default;
+
+    BaseNoise base_;
+    FractalOptions options_;
+    std::vector<double> periods_, amplitudes_, scales_, shift_x_, shift_y_;
+};
+
+}  // namespace cmfilter
