@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace cmfilter {
 
@@ -46,6 +47,7 @@ Expected<FractalNoise> FractalNoise::create(BaseNoise base, const FractalOptions
         f.scales_.push_back(scale);
         f.amplitudes_.push_back(amplitude);
         f.periods_.push_back(f.base_.period / scale);
+        f.log2_periods_.push_back(std::log2(f.periods_.back()));
         f.shift_x_.push_back(256.0 * f.base_.period * unit_interval(splitmix64(state)));
         f.shift_y_.push_back(256.0 * f.base_.period * unit_interval(splitmix64(state)));
         scale *= o.lacunarity;
@@ -83,12 +85,20 @@ double FractalNoise::resolved_fraction(int i, double w) const
 double FractalNoise::mean_over_footprint(double x, double y, double w) const
 {
     const double mu = octave_mean();
+    // a_i(w) from one log2 per call: log2(w / p_i) = log2 w - log2 p_i.
+    const double log2_w = w > 0 ? std::log2(w) : -std::numeric_limits<double>::infinity();
     double sum = 0;
     for (int i = 0; i < options_.octaves; ++i) {
-        const double a = resolved_fraction(i, w);
-        // Skip the base evaluation of fully faded octaves (the finest ones first
-        // to go): far footprints cost almost nothing.
-        const double term = a > 0 ? a * octave(i, x, y) + (1.0 - a) * mu : mu;
+        const double s = log2_w - log2_periods_[static_cast<std::size_t>(i)] + 1.0;
+        double term;
+        if (s <= 0.0) {
+            term = octave(i, x, y);  // whole: w <= p_i / 2
+        } else if (s >= 1.0) {
+            term = mu;  // gone, and not evaluated: far footprints cost almost nothing
+        } else {
+            const double a = 1.0 - s * s * (3.0 - 2.0 * s);
+            term = a * octave(i, x, y) + (1.0 - a) * mu;
+        }
         sum += octave_amplitude(i) * term;
     }
     return sum;

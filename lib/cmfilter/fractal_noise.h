@@ -80,7 +80,7 @@ private:
 
     BaseNoise base_;
     FractalOptions options_;
-    std::vector<double> periods_, amplitudes_, scales_, shift_x_, shift_y_;
+    std::vector<double> periods_, log2_periods_, amplitudes_, scales_, shift_x_, shift_y_;
 };
 
 }  // namespace cmfilter
