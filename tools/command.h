@@ -34,6 +34,10 @@ Expected<std::pair<double, double>> parse_range(const std::string& option, const
 // Splits "WxH" into two integers in 1..65536; names the option and the text on failure.
 Expected<std::pair<int, int>> parse_size(const std::string& option, const std::string& text);
 
+// A progress callback printing "\r<command>: N%" on stderr when the percent
+// changes (a newline at 100%); callers use it only when stderr is a terminal.
+std::function<void(double)> terminal_progress(const std::string& command);
+
 // The OpenColorIO config named by --ocio-config (empty: $OCIO if set, else
 // the built-in config).
 Expected<ColorConfig> load_color_config(const std::string& ocio_config_option);

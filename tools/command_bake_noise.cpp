@@ -64,12 +64,7 @@ Status run(const BakeNoiseArgs& args)
     options.threads = args.threads;
     const bool progress = !args.quiet && !args.json && isatty(STDERR_FILENO);
     if (progress)
-        options.progress = [last = -1](double f) mutable {
-            const int percent = static_cast<int>(f * 100);
-            if (percent == last) return;
-            last = percent;
-            std::cerr << "\rbake-noise: " << percent << "%" << (percent == 100 ? "\n" : "") << std::flush;
-        };
+        options.progress = terminal_progress("bake-noise");
     const Stopwatch t0;
     auto bake = bake_noise_sigma(*noise, options);
     if (!bake) return bake.error();

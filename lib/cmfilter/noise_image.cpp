@@ -1,5 +1,6 @@
 #include "cmfilter/noise_image.h"
 
+#include "cmfilter/artefact_file.h"
 #include "cmfilter/atomic_output.h"
 #include "cmfilter/metadata.h"
 #include "cmfilter/parallel_for.h"
@@ -61,14 +62,7 @@ Status write_noise_image(const std::string& path, const NoiseImageOptions& optio
     set_double_attribute(spec, "cmfilter:scale", options.scale);
     set_double_attribute(spec, "cmfilter:base_period", noise->base_period());
 
-    auto writer = OIIO::ImageOutput::create(out->temp_path());
-    if (!writer) return runtime_error("OpenImageIO cannot write EXR: " + OIIO::geterror());
-    if (!writer->open(out->temp_path(), spec) ||
-        !writer->write_image(OIIO::TypeDesc::FLOAT, pixels->data()) || !writer->close()) {
-        std::string why = writer->geterror();
-        return io_error("cannot write '" + path + "': " + why);
-    }
-    return out->commit();
+    return write_float_artefact(*out, spec, pixels->data());
 }
 
 }  // namespace cmfilter

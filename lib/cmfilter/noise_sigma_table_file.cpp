@@ -1,5 +1,6 @@
 #include "cmfilter/noise_sigma_table_file.h"
 
+#include "cmfilter/artefact_file.h"
 #include "cmfilter/atomic_output.h"
 #include "cmfilter/image_reading.h"
 #include "cmfilter/metadata.h"
@@ -76,14 +77,7 @@ Status write_noise_sigma_table(const std::string& path, const NoiseSigmaBake& ba
     dbl("cmfilter:global_skewness", bake.global.skewness);
     dbl("cmfilter:global_excess_kurtosis", bake.global.excess_kurtosis);
 
-    auto writer = OIIO::ImageOutput::create(out->temp_path());
-    if (!writer) return runtime_error("OpenImageIO cannot write EXR: " + OIIO::geterror());
-    if (!writer->open(out->temp_path(), spec) || !writer->write_image(OIIO::TypeDesc::FLOAT, pixels.data()) ||
-        !writer->close()) {
-        std::string why = writer->geterror();
-        return io_error("cannot write '" + path + "': " + why);
-    }
-    return out->commit();
+    return write_float_artefact(*out, spec, pixels.data());
 }
 
 Status write_noise_sigma_csv(const std::string& path, const NoiseSigmaBake& bake, double base_period)
@@ -112,14 +106,8 @@ Expected<LoadedNoiseSigmaTable> read_noise_sigma_table(const std::string& path, 
     auto in = OIIO::ImageInput::open(path);
     if (!in) return io_error("cannot read '" + path + "': " + OIIO::geterror());
     const OIIO::ImageSpec& spec = in->spec();
-    const std::string kind = spec.get_string_attribute("cmfilter:kind");
-    if (kind != kNoiseSigmaTableKind)
-        return bad_input("'" + path + "' is not a cmfilter noise sigma table (cmfilter:kind is '" + kind +
-                         "', expected '" + kNoiseSigmaTableKind + "')");
-    const int version = spec.get_int_attribute("cmfilter:format_version", 0);
-    if (version != kFormatVersion)
-        return bad_input("'" + path + "' has noise sigma table format version " + std::to_string(version) +
-                         ", this cmfilter reads version " + std::to_string(kFormatVersion));
+    if (auto st = check_artefact_kind(spec, path, kNoiseSigmaTableKind, "noise sigma table", kFormatVersion); !st)
+        return st.error();
     const int lods = spec.get_int_attribute("cmfilter:lods", 0);
     if (image->channels != kChannels || image->height != 1 || lods != image->width)
         return bad_input("'" + path + "' has inconsistent cmfilter metadata (" + std::to_string(lods) +
