@@ -1,6 +1,7 @@
 // The Monte-Carlo noise sigma table (noise_sigma_bake.h): checked against the
 // law of total variance, the analytic Gabor variance and an independent
 // brute-force measurement between table nodes; the table file round trip.
+#include "cmfilter/noise_image.h"
 #include "cmfilter/noise_sigma_bake.h"
 #include "cmfilter/noise_sigma_table_file.h"
 #include "cmfilter/noise_spec.h"
@@ -239,4 +240,18 @@ TEST_CASE("noise sigma table file round trip and CSV")
     CHECK(lines == static_cast<int>(bake->rows.size()));
     std::remove(exr.c_str());
     std::remove(csv.c_str());
+}
+
+TEST_CASE("reading a file that is not a noise sigma table names its kind")
+{
+    NoiseImageOptions o;
+    o.width = o.height = 4;
+    const std::string path = (std::filesystem::temp_directory_path() / "cmfilter-test-not-sigma.exr").string();
+    REQUIRE(write_noise_image(path, o));
+    auto loaded = read_noise_sigma_table(path, FootprintShape::Box);
+    REQUIRE_FALSE(loaded);
+    CHECK(loaded.error().kind == ErrorKind::BadInput);
+    CHECK(loaded.error().message.find("is not a cmfilter noise sigma table (cmfilter:kind is 'noise-image'") !=
+          std::string::npos);
+    std::remove(path.c_str());
 }
