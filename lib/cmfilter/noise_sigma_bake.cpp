@@ -24,7 +24,12 @@ std::uint64_t footprint_state(std::uint64_t seed, std::uint64_t stream, std::uin
     return splitmix64(h);
 }
 
-int box_side(int samples) { return std::max(2, static_cast<int>(std::sqrt(static_cast<double>(samples)) + 1e-9)); }
+// The box's strata per axis: even (strata are paired, below), at least 2.
+int box_side(int samples)
+{
+    const int n = static_cast<int>(std::sqrt(static_cast<double>(samples)) + 1e-9);
+    return std::max(2, n - n % 2);
+}
 
 }  // namespace
 
@@ -64,7 +69,28 @@ std::vector<FootprintMoments> sample_footprints(const FractalNoise& noise, Footp
         mean /= s;
         double ss = 0;
         for (double v : f) ss += (v - mean) * (v - mean);
-        out[static_cast<std::size_t>(k)] = {mean, ss / (s - 1)};
+        double variance = ss / (s - 1);  // independent samples: unbiased
+        if (shape == FootprintShape::Box) {
+            // Stratified samples are each uniform in their cell, so
+            // E[(1/S) sum (f_i - mu)^2] = sigma^2 exactly and
+            // (1/S) sum (f_i - m)^2 + Var(m) is unbiased; S/(S-1) would not be
+            // (it assumes Var(m) = sigma^2 / S, and stratification makes Var(m)
+            // smaller: up to +1/(S-1) in variance). Var(m) = (1/S^2) sum of
+            // the cells' variances, estimated by collapsed strata (Cochran,
+            // "Sampling Techniques", sec. 5A.12): horizontally adjacent cells
+            // paired, (f_a - f_b)^2 / S^2 per pair; it errs high by the
+            // squared difference of the paired cells' means, O(sigma^2 / S^2)
+            // where the noise is smooth across a cell.
+            double var_m = 0;
+            for (int j = 0; j < n; ++j)
+                for (int i = 0; i + 1 < n; i += 2) {
+                    const double d = f[static_cast<std::size_t>(j * n + i)] - f[static_cast<std::size_t>(j * n + i + 1)];
+                    var_m += d * d;
+                }
+            var_m /= static_cast<double>(s) * s;
+            variance = ss / s + var_m;
+        }
+        out[static_cast<std::size_t>(k)] = {mean, variance};
     });
     return out;
 }

@@ -5,11 +5,15 @@
 // At LOD L the footprint width is w = p_0 2^L (p_0 the noise's base period).
 // Two footprints of width w centred at c:
 //   box:      the square [c - w/2, c + w/2]^2, sampled by stratified jitter
-//             (an n x n grid of cells, one uniform point in each, S = n^2);
+//             (an n x n grid of cells, one uniform point in each, S = n^2,
+//             n even);
 //   Gaussian: the isotropic normal N(c, (w/2)^2 I): width = 2 x its standard
 //             deviation, sampled by S independent Gaussian offsets.
 // For F footprint centres uniform over [0, 256 p_0)^2, each footprint j gives
-// the unbiased within-footprint variance v_j = sum (f - mean_j)^2 / (S - 1);
+// an unbiased within-footprint variance v_j: sum (f - mean_j)^2 / (S - 1) for
+// the Gaussian's independent samples; for the box's stratified samples
+// (1/S) sum (f - mean_j)^2 + an estimate of Var(mean_j) (collapsed strata,
+// noise_sigma_bake.cpp), since S/(S-1) assumes independent samples;
 // sigma = sqrt(mean_j v_j). The 95% confidence interval of the mean variance
 // is V +- 1.96 sd(v) / sqrt(F) (central limit theorem over independent
 // footprints), mapped through sqrt to [sigma_lo, sigma_hi]; the reported
@@ -37,12 +41,12 @@ const char* to_string(FootprintShape shape);
 // One footprint's S samples, summarised.
 struct FootprintMoments {
     double mean = 0;      // sample mean
-    double variance = 0;  // unbiased: sum (f - mean)^2 / (S - 1)
+    double variance = 0;  // unbiased within-footprint variance (see above)
 };
 
 // Footprints first .. first + count - 1 of the stream `stream` (any 64-bit
 // key: the bake uses the LOD index and shape), width w, S samples each (for
-// the box S is rounded down to a square, at least 4).
+// the box S is rounded down to the square of an even number, at least 4).
 std::vector<FootprintMoments> sample_footprints(const FractalNoise& noise, FootprintShape shape, double width,
                                                 int samples_per_footprint, std::uint64_t seed,
                                                 std::uint64_t stream, int first, int count, int threads);
