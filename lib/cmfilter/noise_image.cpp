@@ -16,9 +16,13 @@ namespace {
 
 constexpr int kFormatVersion = 1;
 
-}  // namespace
+// The spec's noise and its pixels, after checking the options.
+struct Rendered {
+    FractalNoise noise;
+    std::vector<float> pixels;
+};
 
-Expected<std::vector<float>> render_noise_image(const NoiseImageOptions& options)
+Expected<Rendered> render(const NoiseImageOptions& options)
 {
     if (options.width < 1 || options.width > 65536 || options.height < 1 || options.height > 65536)
         return bad_input("noise image size " + std::to_string(options.width) + " x " +
@@ -37,15 +41,23 @@ Expected<std::vector<float>> render_noise_image(const NoiseImageOptions& options
         for (std::size_t i = 0; i < w; ++i)
             row[i] = static_cast<float>(f(options.scale * (static_cast<double>(i) + 0.5), y));
     });
-    return pixels;
+    return Rendered{std::move(*noise), std::move(pixels)};
+}
+
+}  // namespace
+
+Expected<std::vector<float>> render_noise_image(const NoiseImageOptions& options)
+{
+    auto r = render(options);
+    if (!r) return r.error();
+    return std::move(r->pixels);
 }
 
 Status write_noise_image(const std::string& path, const NoiseImageOptions& options)
 {
     if (auto st = check_output_path(path, ".exr"); !st) return st;
-    auto pixels = render_noise_image(options);
-    if (!pixels) return pixels.error();
-    auto noise = make_noise(options.spec);  // validated by render_noise_image
+    auto rendered = render(options);
+    if (!rendered) return rendered.error();
     auto out = AtomicOutput::begin(path);
     if (!out) return out.error();
 
@@ -60,9 +72,9 @@ Status write_noise_image(const std::string& path, const NoiseImageOptions& optio
                    "data, no colour space; pixel (i, j) = noise(scale (i + 1/2), scale (j + 1/2)), "
                    "row 0 at the top");
     set_double_attribute(spec, "cmfilter:scale", options.scale);
-    set_double_attribute(spec, "cmfilter:base_period", noise->base_period());
+    set_double_attribute(spec, "cmfilter:base_period", rendered->noise.base_period());
 
-    return write_float_artefact(*out, spec, pixels->data());
+    return write_float_artefact(*out, spec, rendered->pixels.data());
 }
 
 }  // namespace cmfilter
