@@ -25,12 +25,18 @@ Command setup_bake_colormap(CLI::App& parent);
 Command setup_bake_moments(CLI::App& parent);
 Command setup_compare(CLI::App& parent);
 Command setup_info(CLI::App& parent);
+Command setup_noise_image(CLI::App& parent);
+Command setup_bake_noise(CLI::App& parent);
 
 // Splits "a:b" into two numbers; names the option and the text on failure.
 Expected<std::pair<double, double>> parse_range(const std::string& option, const std::string& text);
 
 // Splits "WxH" into two integers in 1..65536; names the option and the text on failure.
 Expected<std::pair<int, int>> parse_size(const std::string& option, const std::string& text);
+
+// A progress callback printing "\r<command>: N%" on stderr when the percent
+// changes (a newline at 100%); callers use it only when stderr is a terminal.
+std::function<void(double)> terminal_progress(const std::string& command);
 
 // The OpenColorIO config named by --ocio-config (empty: $OCIO if set, else
 // the built-in config).

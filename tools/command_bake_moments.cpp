@@ -55,13 +55,7 @@ Status run(const BakeMomentsArgs& args)
     options.threads = args.threads;
     const bool progress = !args.quiet && !args.json && isatty(STDERR_FILENO);
     if (progress)
-        options.progress = [last = -1](double f) mutable {
-            const int percent = static_cast<int>(f * 100);
-            if (percent == last) return;
-            last = percent;
-            std::cerr << "\rbake-moments: " << percent << "%" << (percent == 100 ? "\n" : "")
-                      << std::flush;
-        };
+        options.progress = terminal_progress("bake-moments");
     const Stopwatch t0;
     // The histogram pyramid first: it is the one refused for a driver with
     // too many distinct values, and then neither file is written.

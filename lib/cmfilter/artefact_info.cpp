@@ -5,6 +5,8 @@
 #include "cmfilter/histogram_pyramid.h"
 #include "cmfilter/image_reading.h"
 #include "cmfilter/moment_pyramid_info.h"
+#include "cmfilter/noise_image.h"
+#include "cmfilter/noise_sigma_table_file.h"
 
 #include <OpenImageIO/imageio.h>
 
@@ -33,6 +35,16 @@ std::string describe_kind(const std::string& kind, int width, int height)
     if (kind == kFilteredImageKind)
         return "filtered colour image of a colour-mapped driver (cmfilter apply): " +
                std::to_string(width) + " x " + std::to_string(height) + " RGB";
+    if (kind == kNoiseImageKind)
+        return "procedural noise driver (cmfilter noise-image): " + std::to_string(width) + " x " +
+               std::to_string(height) + ", channel Y = the noise (cmfilter:noise) at pixel centres, "
+               "data (no colour space)";
+    if (kind == kNoiseSigmaTableKind)
+        return "noise sigma table (Heitz et al. 2013, sec. 4.2: the noise standard deviation per level "
+               "of detail, a 1D texture): " + std::to_string(width) + " LODs from cmfilter:lod_first in "
+               "steps of cmfilter:lod_step; channels box_sigma, gaussian_sigma (unresolved standard "
+               "deviation inside a box of width w = base_period 2^LOD / a Gaussian of standard deviation "
+               "w/2) and box_ci, gaussian_ci (95% confidence half-widths)";
     return "cmfilter artefact of an unknown kind (made by a newer cmfilter?)";
 }
 

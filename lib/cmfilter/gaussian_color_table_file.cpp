@@ -1,5 +1,6 @@
 #include "cmfilter/gaussian_color_table_file.h"
 
+#include "cmfilter/artefact_file.h"
 #include "cmfilter/atomic_output.h"
 #include "cmfilter/image_reading.h"
 #include "cmfilter/metadata.h"
@@ -62,14 +63,7 @@ Status write_gaussian_color_table(const std::string& path, const GaussianColorTa
         dbl("cmfilter:lookup_de2000_max", info.lookup_error->max);
     }
 
-    auto writer = OIIO::ImageOutput::create(out->temp_path());
-    if (!writer) return runtime_error("OpenImageIO cannot write EXR: " + OIIO::geterror());
-    if (!writer->open(out->temp_path(), spec) ||
-        !writer->write_image(OIIO::TypeDesc::FLOAT, table.data().data()) || !writer->close()) {
-        std::string why = writer->geterror();
-        return io_error("cannot write '" + path + "': " + why);
-    }
-    return out->commit();
+    return write_float_artefact(*out, spec, table.data().data());
 }
 
 Expected<LoadedGaussianColorTable> read_gaussian_color_table(const std::string& path)
@@ -81,14 +75,8 @@ Expected<LoadedGaussianColorTable> read_gaussian_color_table(const std::string& 
     if (!in) return io_error("cannot read '" + path + "': " + OIIO::geterror());
     const OIIO::ImageSpec& spec = in->spec();
 
-    const std::string kind = spec.get_string_attribute("cmfilter:kind");
-    if (kind != kGaussianColorTableKind)
-        return bad_input("'" + path + "' is not a cmfilter colour table (cmfilter:kind is '" +
-                         kind + "', expected '" + kGaussianColorTableKind + "')");
-    const int version = spec.get_int_attribute("cmfilter:format_version", 0);
-    if (version != kFormatVersion)
-        return bad_input("'" + path + "' has table format version " + std::to_string(version) +
-                         ", this cmfilter reads version " + std::to_string(kFormatVersion));
+    if (auto st = check_artefact_kind(spec, path, kGaussianColorTableKind, "colour table", kFormatVersion); !st)
+        return st.error();
 
     const auto dbl = [&](const char* name) { return double_attribute(spec, name); };
     TableAxes ax;
