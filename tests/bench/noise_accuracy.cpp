@@ -1,0 +1,177 @@
+// Accuracy of the filtered noise colour (sec. 4.2) against a supersampled
+// reference, per bundled map and LOD:
+//   gaussian       T(mean_over_footprint, sigma): the table T of the map
+//                  (default GaussianColorTable::bake, 256 value nodes) looked
+//                  up at the filtered mean and the box column of the noise's
+//                  sigma table, baked in process (bake_noise_sigma);
+//   gaussian-2048  the same with a 2048-value table (isolates the value
+//                  axis' bilinear error at small sigma);
+//   naive          C0(mean_over_footprint);
+//   reference      the average of C0(f(x)) over 32 x 32 jittered-stratified
+//                  samples inside the square footprint of width w.
+// Footprints: squares of width w = p_0 2^L, L from log2(p_{N-1} / 16 / p_0)
+// (1/16 of the finest octave's period) to 2 (4 base periods) in steps of 0.5,
+// P centres uniform over [0, 256 p_0)^2. Each map is laid over
+// [mean - 2.78 sigma, mean + 2.78 sigma] of the noise's global statistics
+// (clamp), so the noise's standard deviation is 0.18 of the map's domain, as
+// for the Gaussian-like driver of docs/apply.md.
+// Errors are CIEDE2000 (scene-linear Rec.709), summarised over the P
+// footprints. CSV on stdout:
+//   noise,map,lod,width,method,mean,p95,max
+//
+// (LABEL names the noise in the CSV, whose specs contain commas.)
+//   cmfilter-noise-accuracy LUTS_DIR LABEL NOISE_SPEC [P] [THREADS]
+#include "cmfilter/ciede2000.h"
+#include "cmfilter/color_map_loading.h"
+#include "cmfilter/error_summary.h"
+#include "cmfilter/filtered_noise.h"
+#include "cmfilter/gaussian_color_table.h"
+#include "cmfilter/noise_lattice.h"
+#include "cmfilter/noise_sigma_bake.h"
+#include "cmfilter/noise_spec.h"
+#include "cmfilter/parallel_for.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <string>
+#include <vector>
+
+using namespace cmfilter;
+
+namespace {
+
+constexpr int kStrata = 32;              // reference: 32 x 32 jittered samples
+constexpr double kLodStep = 0.5;
+constexpr double kDomainSigmas = 2.78;   // map domain: mean +- 2.78 sigma (sd = 0.18 of it)
+
+struct Map {
+    std::string name;
+    ColorMap map;
+    GaussianColorTable table, table2048;
+};
+
+const char* const kMethods[] = {"gaussian", "gaussian-2048", "naive"};
+constexpr int kMethodCount = 3;
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    if (argc < 4 || argc > 6) {
+        std::cerr << "usage: cmfilter-noise-accuracy LUTS_DIR LABEL NOISE_SPEC [P] [THREADS]\n";
+        return 1;
+    }
+    const std::string luts = argv[1], label = argv[2], spec_text = argv[3];
+    const int points = argc > 4 ? std::atoi(argv[4]) : 2048;
+    const int threads = argc > 5 ? std::atoi(argv[5]) : 0;
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto seconds = [&] {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    };
+
+    auto spec = parse_noise_spec(spec_text);
+    if (!spec) {
+        std::cerr << spec.error().message << "\n";
+        return 1;
+    }
+    auto noise = make_noise(*spec);
+    if (!noise) {
+        std::cerr << noise.error().message << "\n";
+        return 1;
+    }
+    NoiseSigmaBakeOptions bake_options;
+    bake_options.threads = threads;
+    auto bake = bake_noise_sigma(*noise, bake_options);
+    if (!bake) {
+        std::cerr << bake.error().message << "\n";
+        return 1;
+    }
+    auto sigma_table = bake->table(FootprintShape::Box);
+    if (!sigma_table) {
+        std::cerr << sigma_table.error().message << "\n";
+        return 1;
+    }
+    const FilteredNoise filtered(*noise, *sigma_table);
+    const double global_mean = bake->global.mean, global_sigma = bake->global.sigma;
+    std::fprintf(stderr, "noise_accuracy: %s: sigma table baked in %.1f s (global mean %.4f, sigma %.4f)\n",
+                 spec_text.c_str(), seconds(), global_mean, global_sigma);
+
+    auto config = ColorConfig::load("");
+    if (!config) {
+        std::cerr << config.error().message << "\n";
+        return 1;
+    }
+    std::vector<Map> maps;
+    for (const char* name : {"terrain", "stripes", "step", "narrow-band", "hue-ramp"}) {
+        ColorMapLoadOptions load;
+        load.path = luts + "/" + name + ".png";
+        load.vmin = global_mean - kDomainSigmas * global_sigma;
+        load.vmax = global_mean + kDomainSigmas * global_sigma;
+        auto loaded = load_color_map(load, *config);
+        if (!loaded) {
+            std::cerr << loaded.error().message << "\n";
+            return 1;
+        }
+        GaussianColorTableOptions options;
+        options.threads = threads;
+        auto table = GaussianColorTable::bake(loaded->map, options);
+        options.values = 2048;
+        auto table2048 = GaussianColorTable::bake(loaded->map, options);
+        if (!table || !table2048) {
+            std::cerr << "noise_accuracy: table bake failed for " << name << "\n";
+            return 1;
+        }
+        maps.push_back({name, loaded->map, std::move(*table), std::move(*table2048)});
+    }
+
+    const int octaves = noise->options().octaves;
+    const double p0 = noise->base_period();
+    const double lod_first = std::log2(noise->octave_period(octaves - 1) / 16.0 / p0);
+    const int lods = static_cast<int>(std::floor((2.0 - lod_first) / kLodStep + 1e-9)) + 1;
+    const std::size_t map_count = maps.size();
+
+    std::cout << "noise,map,lod,width,method,mean,p95,max\n";
+    for (int k = 0; k < lods; ++k) {
+        const double lod = lod_first + k * kLodStep, w = p0 * std::exp2(lod);
+        const double sigma = filtered.unresolved_sigma(w);
+        // errors[(map * kMethodCount + method) * points + footprint]
+        std::vector<double> errors(map_count * kMethodCount * static_cast<std::size_t>(points));
+        parallel_for(points, threads, [&](int j) {
+            std::uint64_t state = (static_cast<std::uint64_t>(k) << 32) ^ static_cast<std::uint64_t>(j);
+            splitmix64(state);
+            const double cx = 256.0 * p0 * unit_interval(splitmix64(state));
+            const double cy = 256.0 * p0 * unit_interval(splitmix64(state));
+            std::vector<double> f(kStrata * kStrata);
+            for (int a = 0; a < kStrata; ++a)
+                for (int b = 0; b < kStrata; ++b) {
+                    const double x = cx + w * ((a + unit_interval(splitmix64(state))) / kStrata - 0.5);
+                    const double y = cy + w * ((b + unit_interval(splitmix64(state))) / kStrata - 0.5);
+                    f[static_cast<std::size_t>(a * kStrata + b)] = (*noise)(x, y);
+                }
+            const double mean = filtered.mean_over_footprint(cx, cy, w);
+            for (std::size_t m = 0; m < map_count; ++m) {
+                Rgb reference;
+                for (double v : f) reference += maps[m].map.evaluate(v);
+                reference = (1.0 / static_cast<double>(f.size())) * reference;
+                const Rgb estimates[kMethodCount] = {maps[m].table.lookup(mean, sigma),
+                                                     maps[m].table2048.lookup(mean, sigma),
+                                                     maps[m].map.evaluate(mean)};
+                for (int e = 0; e < kMethodCount; ++e)
+                    errors[(m * kMethodCount + e) * points + j] = ciede2000_linear_rgb(reference, estimates[e]);
+            }
+        });
+        for (std::size_t m = 0; m < map_count; ++m)
+            for (int e = 0; e < kMethodCount; ++e) {
+                const auto first = errors.begin() + static_cast<std::ptrdiff_t>((m * kMethodCount + e) * points);
+                const ErrorSummary s = summarize_errors(std::vector<double>(first, first + points));
+                std::printf("%s,%s,%.2f,%.9g,%s,%.4f,%.4f,%.4f\n", label.c_str(), maps[m].name.c_str(), lod, w,
+                            kMethods[e], s.mean, s.p95, s.max);
+            }
+        std::fflush(stdout);
+        std::fprintf(stderr, "noise_accuracy: LOD %.2f (sigma %.4f) done at %.1f s\n", lod, sigma, seconds());
+    }
+    return 0;
+}
