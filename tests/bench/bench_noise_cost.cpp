@@ -16,6 +16,8 @@
 #include "cmfilter/gaussian_color_table.h"
 #include "cmfilter/noise_spec.h"
 
+#include "bench_noise.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -84,16 +86,8 @@ int main(int argc, char** argv)
               << "| noise | LOD band | unfiltered ns | filtered ns | filtered / unfiltered | unfiltered + C0 ns | filtered / (unfiltered + C0) |\n"
               << "|---|---|---:|---:|---:|---:|---:|\n";
     for (const char* text : specs) {
-        auto spec = parse_noise_spec(text);
-        if (!spec) {
-            std::cerr << spec.error().message << "\n";
-            return 1;
-        }
-        auto noise = make_noise(*spec);
-        if (!noise) {
-            std::cerr << noise.error().message << "\n";
-            return 1;
-        }
+        const auto noise = noise_from_spec(text);
+        if (!noise) return 1;
         const int octaves = noise->options().octaves;
         const double p0 = noise->base_period();
         const double lod_first = std::log2(noise->octave_period(octaves - 1) / 16.0 / p0), lod_last = 2.0;

@@ -7,6 +7,10 @@
 //   gaussian-2048  the same with a 2048-value table (isolates the value
 //                  axis' bilinear error at small sigma);
 //   naive          C0(mean_over_footprint);
+//   oracle-2048    T(m, s) with the 2048-value table at the footprint's own
+//                  sample mean m and standard deviation s of the reference
+//                  samples: what is left is the Gaussian assumption alone,
+//                  without the errors of the faded mean and of the sigma table;
 //   reference      the average of C0(f(x)) over 32 x 32 jittered-stratified
 //                  samples inside the square footprint of width w.
 // Footprints: squares of width w = p_0 2^L, L from log2(p_{N-1} / 16 / p_0)
@@ -29,6 +33,8 @@
 #include "cmfilter/noise_lattice.h"
 #include "cmfilter/noise_sigma_bake.h"
 #include "cmfilter/noise_spec.h"
+
+#include "bench_noise.h"
 #include "cmfilter/parallel_for.h"
 
 #include <chrono>
@@ -53,8 +59,8 @@ struct Map {
     GaussianColorTable table, table2048;
 };
 
-const char* const kMethods[] = {"gaussian", "gaussian-2048", "naive"};
-constexpr int kMethodCount = 3;
+const char* const kMethods[] = {"gaussian", "gaussian-2048", "naive", "oracle-2048"};
+constexpr int kMethodCount = 4;
 
 }  // namespace
 
@@ -72,16 +78,8 @@ int main(int argc, char** argv)
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     };
 
-    auto spec = parse_noise_spec(spec_text);
-    if (!spec) {
-        std::cerr << spec.error().message << "\n";
-        return 1;
-    }
-    auto noise = make_noise(*spec);
-    if (!noise) {
-        std::cerr << noise.error().message << "\n";
-        return 1;
-    }
+    const auto noise = noise_from_spec(spec_text);
+    if (!noise) return 1;
     NoiseSigmaBakeOptions bake_options;
     bake_options.threads = threads;
     auto bake = bake_noise_sigma(*noise, bake_options);
@@ -152,13 +150,19 @@ int main(int argc, char** argv)
                     f[static_cast<std::size_t>(a * kStrata + b)] = (*noise)(x, y);
                 }
             const double mean = filtered.mean_over_footprint(cx, cy, w);
+            double sum = 0, sum2 = 0;
+            for (double v : f) sum += v;
+            const double sample_mean = sum / static_cast<double>(f.size());
+            for (double v : f) sum2 += (v - sample_mean) * (v - sample_mean);
+            const double sample_sigma = std::sqrt(sum2 / static_cast<double>(f.size()));
             for (std::size_t m = 0; m < map_count; ++m) {
                 Rgb reference;
                 for (double v : f) reference += maps[m].map.evaluate(v);
                 reference = (1.0 / static_cast<double>(f.size())) * reference;
                 const Rgb estimates[kMethodCount] = {maps[m].table.lookup(mean, sigma),
                                                      maps[m].table2048.lookup(mean, sigma),
-                                                     maps[m].map.evaluate(mean)};
+                                                     maps[m].map.evaluate(mean),
+                                                     maps[m].table2048.lookup(sample_mean, sample_sigma)};
                 for (int e = 0; e < kMethodCount; ++e)
                     errors[(m * kMethodCount + e) * points + j] = ciede2000_linear_rgb(reference, estimates[e]);
             }

@@ -39,7 +39,7 @@ for noise in fbm turbulence; do
   gnuplot <<GNUPLOT
 set terminal pngcairo size 1100,700 font "sans,11"
 set output "$root/docs/images/noise-accuracy-$noise.png"
-set title "6-octave gradient $noise, square footprints, ${points} per LOD: mean CIEDE2000 against 32x32 supersampling"
+set title "$noise (gradient, 6 octaves), ${points} footprints per LOD: mean CIEDE2000 vs 32x32 supersampling"
 set xlabel "LOD = log2(footprint width / base period)"
 set ylabel "mean CIEDE2000 (log scale)"
 set logscale y
