@@ -25,6 +25,8 @@
 
 #include <filesystem>
 
+#include "bench_timing.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -36,6 +38,7 @@
 #include <vector>
 
 using namespace cmfilter;
+using namespace cmfilter_bench;
 
 namespace {
 
@@ -43,32 +46,6 @@ const char* kMaps[] = {"terrain", "stripes", "step", "narrow-band", "hue-ramp"};
 constexpr int kSize = 1024;          // level width and height
 constexpr int kPixels = 1 << 22;     // lookups per run
 constexpr int kRuns = 7;
-
-// Runs a and b alternately kRuns times each, so that both see the same
-// conditions on a shared machine, and returns the fastest time of each (ms).
-template <typename A, typename B>
-std::pair<double, double> fastest_pair_ms(A&& a, B&& b)
-{
-    const auto time = [](auto&& f) {
-        const auto t0 = std::chrono::steady_clock::now();
-        f();
-        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    };
-    double best_a = 1e300, best_b = 1e300;
-    for (int r = 0; r < kRuns; ++r) {
-        best_a = std::min(best_a, time(a));
-        best_b = std::min(best_b, time(b));
-    }
-    return {best_a, best_b};
-}
-
-std::string cpu_name()
-{
-    std::ifstream in("/proc/cpuinfo");
-    for (std::string line; std::getline(in, line);)
-        if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
-    return "unknown CPU";
-}
 
 // Bilinear fetch of C interleaved float channels at (s, t) in texel units, clamped.
 template <int C>
@@ -127,7 +104,7 @@ int through_moment_texture(const std::string& luts, const ColorConfig& config, c
         };
         double sink = 0;
         LookupCounters counters;
-        const auto [naive, gaussian] = fastest_pair_ms([&] {
+        const auto [naive, gaussian] = fastest_pair_ms(kRuns, [&] {
             double acc = 0;
             for (int i = 0; i < kLookups; ++i) {
                 const MomentSample m = texture->lookup(coordinate(i, 0), coordinate(i, 1), 0.0f);
@@ -200,7 +177,7 @@ int main(int argc, char** argv)
         if (!table) return 1;
         double sink = 0;
         LookupCounters counters;
-        const auto [naive, gaussian] = fastest_pair_ms([&] {
+        const auto [naive, gaussian] = fastest_pair_ms(kRuns, [&] {
             double acc = 0;
             for (int i = 0; i < kPixels; ++i) {
                 float m;

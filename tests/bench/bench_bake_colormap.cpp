@@ -9,6 +9,8 @@
 #include "cmfilter/gaussian_color_table_file.h"
 #include "cmfilter/table_lookup_error.h"
 
+#include "bench_timing.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -20,31 +22,12 @@
 #include <vector>
 
 using namespace cmfilter;
+using namespace cmfilter_bench;
 namespace fs = std::filesystem;
 
 namespace {
 
 const char* kMaps[] = {"terrain", "stripes", "step", "narrow-band", "hue-ramp"};
-
-template <typename F>
-double fastest_ms(int runs, F&& f)
-{
-    std::vector<double> t;
-    for (int r = 0; r < runs; ++r) {
-        const auto t0 = std::chrono::steady_clock::now();
-        f();
-        t.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
-    }
-    return *std::min_element(t.begin(), t.end());
-}
-
-std::string cpu_name()
-{
-    std::ifstream in("/proc/cpuinfo");
-    for (std::string line; std::getline(in, line);)
-        if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
-    return "unknown CPU";
-}
 
 LoadedColorMap load(const std::string& dir, const std::string& name, const ColorConfig& config)
 {

@@ -12,6 +12,8 @@
 #include <sys/resource.h>
 #include <sys/wait.h>
 
+#include "bench_timing.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -25,6 +27,8 @@
 #include <vector>
 
 extern char** environ;
+
+using cmfilter_bench::cpu_name;
 
 namespace {
 
@@ -78,14 +82,6 @@ bool write_driver(const std::string& path, int size)
         if (!out->write_scanline(y, 0, OIIO::TypeDesc::FLOAT, row.data())) return false;
     }
     return out->close();
-}
-
-std::string cpu_name()
-{
-    std::ifstream in("/proc/cpuinfo");
-    for (std::string line; std::getline(in, line);)
-        if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
-    return "unknown CPU";
 }
 
 void keep_best(Run& b, const Run& r)

@@ -18,6 +18,8 @@
 
 #include "bench_noise.h"
 
+#include "bench_timing.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -30,36 +32,12 @@
 #include <vector>
 
 using namespace cmfilter;
+using namespace cmfilter_bench;
 
 namespace {
 
 constexpr int kPoints = 1 << 16;
 constexpr int kRuns = 3;
-
-std::string cpu_name()
-{
-    std::ifstream in("/proc/cpuinfo");
-    for (std::string line; std::getline(in, line);)
-        if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
-    return "unknown CPU";
-}
-
-// a and b run alternately kRuns times each; the fastest time of each, in ms.
-template <typename A, typename B>
-std::pair<double, double> fastest_pair_ms(A&& a, B&& b)
-{
-    const auto time = [](auto&& f) {
-        const auto t0 = std::chrono::steady_clock::now();
-        f();
-        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    };
-    double best_a = 1e300, best_b = 1e300;
-    for (int r = 0; r < kRuns; ++r) {
-        best_a = std::min(best_a, time(a));
-        best_b = std::min(best_b, time(b));
-    }
-    return {best_a, best_b};
-}
 
 }  // namespace
 
@@ -110,34 +88,24 @@ int main(int argc, char** argv)
             }
             double sink = 0;
             LookupCounters counters;
-            const auto [unfiltered, filt] = fastest_pair_ms(
-                [&] {
-                    double acc = 0;
-                    for (int i = 0; i < kPoints; ++i) acc += (*noise)(xs[i], ys[i]);
-                    sink += acc;
-                },
-                [&] {
-                    double acc = 0;
-                    for (int i = 0; i < kPoints; ++i) {
-                        const double m = filtered.mean_over_footprint(xs[i], ys[i], ws[i]);
-                        acc += table->lookup(m, filtered.unresolved_sigma(ws[i]), &counters).g;
-                    }
-                    sink += acc;
-                });
-            const auto [mapped, filt2] = fastest_pair_ms(
-                [&] {
-                    double acc = 0;
-                    for (int i = 0; i < kPoints; ++i) acc += map->map.evaluate((*noise)(xs[i], ys[i])).g;
-                    sink += acc;
-                },
-                [&] {
-                    double acc = 0;
-                    for (int i = 0; i < kPoints; ++i) {
-                        const double m = filtered.mean_over_footprint(xs[i], ys[i], ws[i]);
-                        acc += table->lookup(m, filtered.unresolved_sigma(ws[i]), &counters).g;
-                    }
-                    sink += acc;
-                });
+            const auto filtered_run = [&] {
+                double acc = 0;
+                for (int i = 0; i < kPoints; ++i) {
+                    const double m = filtered.mean_over_footprint(xs[i], ys[i], ws[i]);
+                    acc += table->lookup(m, filtered.unresolved_sigma(ws[i]), &counters).g;
+                }
+                sink += acc;
+            };
+            const auto [unfiltered, filt] = fastest_pair_ms(kRuns, [&] {
+                double acc = 0;
+                for (int i = 0; i < kPoints; ++i) acc += (*noise)(xs[i], ys[i]);
+                sink += acc;
+            }, filtered_run);
+            const auto [mapped, filt2] = fastest_pair_ms(kRuns, [&] {
+                double acc = 0;
+                for (int i = 0; i < kPoints; ++i) acc += map->map.evaluate((*noise)(xs[i], ys[i])).g;
+                sink += acc;
+            }, filtered_run);
             const double f = std::min(filt, filt2);
             char row[300];
             std::snprintf(row, sizeof row, "| %s | %.2f .. %.2f | %.1f | %.1f | %.2f | %.1f | %.2f |\n", text, lo, hi,
