@@ -62,12 +62,8 @@ Status run(const BakeMomentsArgs& args)
     std::optional<HistogramPyramidInfo> histograms;
     if (!args.histograms.empty()) {
         HistogramBakeOptions h;
-        h.driver_path = args.driver_path;
+        static_cast<PyramidBakeOptions&>(h) = options;  // the same driver, wrap and threads
         h.output_path = args.histograms;
-        h.channel = args.channel;
-        h.nonfinite = *nan;
-        h.wrap = *wrap;
-        h.threads = args.threads;
         auto baked = bake_histogram_pyramid(h);
         if (!baked) return baked.error();
         histograms = std::move(*baked);

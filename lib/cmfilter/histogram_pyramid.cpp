@@ -16,12 +16,7 @@ Expected<HistogramPyramidInfo> bake_histogram_pyramid(const HistogramBakeOptions
         return bad_input("tile size " + std::to_string(options.tile_size) + " is invalid (expected >= 1)");
     auto out = AtomicOutput::begin(options.output_path);
     if (!out) return out.error();
-    DriverReadOptions read;
-    read.path = options.driver_path;
-    read.channel = options.channel;
-    read.nonfinite = options.nonfinite;
-    read.threads = options.threads;
-    auto hashed = read_driver_and_hash(read);
+    auto hashed = read_driver_and_hash(options.driver_read());
     if (!hashed) return hashed.error();
     DriverImage* driver = &hashed->image;
     const std::string* digest = &hashed->sha256;

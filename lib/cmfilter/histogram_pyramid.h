@@ -21,6 +21,7 @@
 
 #include "cmfilter/driver_image.h"
 #include "cmfilter/error.h"
+#include "cmfilter/pyramid_bake_options.h"
 #include "cmfilter/texture_wrap.h"
 
 #include <OpenImageIO/imageio.h>
@@ -59,16 +60,7 @@ void set_histogram_pyramid_metadata(OIIO::ImageSpec& spec, const HistogramPyrami
 Expected<HistogramPyramidInfo> get_histogram_pyramid_metadata(const OIIO::ImageSpec& spec,
                                                               const std::string& path);
 
-struct HistogramBakeOptions {
-    std::string driver_path;
-    std::string output_path;     // .exr, written atomically
-    std::string channel;         // as for bake-moments
-    NonFinitePolicy nonfinite = NonFinitePolicy::Error;
-    TextureWrap wrap = TextureWrap::Clamp;
-    int tile_size = 64;
-    std::string compression = "zip";
-    int threads = 0;
-};
+struct HistogramBakeOptions : PyramidBakeOptions {};
 
 // BadInput (listing how many there are) when the driver has more than
 // kHistogramMaxValues distinct values.

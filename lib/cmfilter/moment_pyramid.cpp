@@ -26,12 +26,7 @@ Expected<MomentBakeResult> bake_moment_pyramid(const MomentBakeOptions& options)
     if (!out) return out.error();
     MomentBakeResult result;
     const Stopwatch t0;
-    DriverReadOptions read;
-    read.path = options.driver_path;
-    read.channel = options.channel;
-    read.nonfinite = options.nonfinite;
-    read.threads = options.threads;
-    auto hashed = read_driver_and_hash(read);
+    auto hashed = read_driver_and_hash(options.driver_read());
     if (!hashed) return hashed.error();
     DriverImage* driver = &hashed->image;
     const std::string* digest = &hashed->sha256;

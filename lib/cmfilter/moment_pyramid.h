@@ -20,6 +20,7 @@
 #include "cmfilter/driver_image.h"
 #include "cmfilter/error.h"
 #include "cmfilter/moment_pyramid_info.h"
+#include "cmfilter/pyramid_bake_options.h"
 #include "cmfilter/texture_wrap.h"
 
 #include <functional>
@@ -27,15 +28,7 @@
 
 namespace cmfilter {
 
-struct MomentBakeOptions {
-    std::string driver_path;
-    std::string output_path;                        // .exr, written atomically
-    std::string channel;                            // name or index; empty: single-channel driver
-    NonFinitePolicy nonfinite = NonFinitePolicy::Error;
-    TextureWrap wrap = TextureWrap::Clamp;
-    int tile_size = 64;                             // square tiles, as maketx's default
-    std::string compression = "zip";                // OpenEXR compression, as maketx's default
-    int threads = 0;                                // 0: all cores
+struct MomentBakeOptions : PyramidBakeOptions {
     std::function<void(double fraction)> progress;  // optional, from the calling thread
 };
 
