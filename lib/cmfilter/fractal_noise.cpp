@@ -40,6 +40,19 @@ Expected<FractalNoise> FractalNoise::create(BaseNoise base, const FractalOptions
 
     FractalNoise f;
     f.base_ = std::move(base);
+    auto& known = o.sum == FractalSum::Fbm ? f.base_.correlation : f.base_.correlation_abs;
+    if (!known) {
+        auto evaluate = f.base_.evaluate;
+        auto term = o.sum == FractalSum::Fbm
+                        ? std::function<double(double, double)>(evaluate)
+                        : std::function<double(double, double)>(
+                              [evaluate](double x, double y) { return std::fabs(evaluate(x, y)); });
+        auto measured = measure_box_correlation(term, f.base_.period);
+        if (!measured) return measured.error();
+        known = std::move(*measured);
+    }
+    f.correlation_ = known;
+    f.log2_cutoff_ = std::log2(known->cutoff());
     f.options_ = o;
     std::uint64_t state = seed;
     double scale = 1, amplitude = 1;
@@ -77,28 +90,26 @@ double FractalNoise::octave_mean() const
 
 double FractalNoise::resolved_fraction(int i, double w) const
 {
-    if (!(w > 0)) return 1.0;  // a point sample (or no footprint) resolves everything
-    const double s = std::clamp(std::log2(w / octave_period(i)) + 1.0, 0.0, 1.0);
-    return 1.0 - s * s * (3.0 - 2.0 * s);
+    return (*correlation_)(w / octave_period(i));
 }
 
 double FractalNoise::mean_over_footprint(double x, double y, double w) const
 {
+    if (!(w > 0)) return (*this)(x, y);  // a point keeps every octave whole
+    return mean_over_footprint_log2(x, y, std::log2(w));
+}
+
+double FractalNoise::mean_over_footprint_log2(double x, double y, double log2_w) const
+{
+    if (!(log2_w > -std::numeric_limits<double>::infinity())) return (*this)(x, y);  // a point (or NaN)
     const double mu = octave_mean();
-    // a_i(w) from one log2 per call: log2(w / p_i) = log2 w - log2 p_i.
-    const double log2_w = w > 0 ? std::log2(w) : -std::numeric_limits<double>::infinity();
+    // beta(w / p_i) from one log2 per call: log2(w / p_i) = log2 w - log2 p_i.
     double sum = 0;
     for (int i = 0; i < options_.octaves; ++i) {
-        const double s = log2_w - log2_periods_[static_cast<std::size_t>(i)] + 1.0;
-        double term;
-        if (s <= 0.0) {
-            term = octave(i, x, y);  // whole: w <= p_i / 2
-        } else if (s >= 1.0) {
-            term = mu;  // gone, and not evaluated: far footprints cost almost nothing
-        } else {
-            const double a = 1.0 - s * s * (3.0 - 2.0 * s);
-            term = a * octave(i, x, y) + (1.0 - a) * mu;
-        }
+        const double log2_k = log2_w - log2_periods_[static_cast<std::size_t>(i)];
+        double term = mu;  // past the cutoff: averaged away, and not evaluated
+        if (log2_k < log2_cutoff_)
+            term = mu + correlation_->at_log2(log2_k) * (octave(i, x, y) - mu);
         sum += octave_amplitude(i) * term;
     }
     return sum;

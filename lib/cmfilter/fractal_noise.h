@@ -9,20 +9,25 @@
 // Turbulence is not Gaussian (a folded, skewed sum): a stress case for the
 // Gaussian filtering of sec. 4.2.
 //
-// Filtered evaluation over a footprint of width w (docs/noise.md): octave i
-// keeps the fraction a_i(w) of its own value and fades the rest to the octave
-// mean mu (the base mean for fBm, the base mean of |n| for turbulence):
-//     mean_w(x) = sum_i gain^i (a_i(w) t_i(x) + (1 - a_i(w)) mu)
-//     a_i(w) = 1 - smoothstep(log2(w / p_i) + 1),  smoothstep(s) = 3s^2 - 2s^3 on [0, 1],
-// so an octave is whole while w <= p_i / 2, gone once w >= p_i (where a box of
-// width w averages a wave of period p_i to nothing), and fades smoothly (C1
-// in w) between: no popping across LOD.
+// Filtered evaluation over a square footprint of width w (docs/noise.md,
+// "Filtered mean"): each octave's term t_i (n or |n|) is replaced by the
+// least-squares prediction of its mean over the footprint from its value at
+// the centre,
+//     mean_w(x) = sum_i gain^i (mu + beta(w / p_i) (t_i(x) - mu)),
+// mu the term's mean (the base mean for fBm, mean |n| for turbulence) and
+// beta the term's box correlation (box_correlation.h): the mean of its
+// normalised autocorrelation over the footprint. beta = 1 for a point, falls
+// smoothly (C1 in w: no popping across LOD) as the footprint averages the
+// octave away, and is exactly 0 past its cutoff, where the octave is not
+// evaluated at all.
 #pragma once
 
+#include "cmfilter/box_correlation.h"
 #include "cmfilter/error.h"
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,6 +39,10 @@ struct BaseNoise {
     double period = 1.0;    // p_0, in noise coordinates
     double mean = 0.0;      // E[n]: 0 for every built-in noise
     double mean_abs = 0.0;  // E[|n|]: turbulence octaves fade to it
+    // Box correlations of n (fBm) and |n| (turbulence); FractalNoise::create
+    // measures the one its sum needs when it is missing
+    // (measure_box_correlation).
+    std::optional<BoxCorrelation> correlation, correlation_abs;
 };
 
 // E[|n|] measured by jittered-stratified sampling: samples_per_axis^2 points,
@@ -65,11 +74,16 @@ public:
     double octave_amplitude(int i) const { return amplitudes_[static_cast<std::size_t>(i)]; }
     // What an octave fades to: the base mean (fBm) or mean |n| (turbulence).
     double octave_mean() const;
-    // a_i(w): the fraction of octave i a footprint of width w still resolves.
+    // beta(w / p_i): the weight octave i's value at the centre keeps in the
+    // mean over a footprint of width w.
     double resolved_fraction(int i, double w) const;
+    // The box correlation of the octave term (n for fBm, |n| for turbulence).
+    const BoxCorrelation& term_correlation() const { return *correlation_; }
 
     // The mean over a footprint of width w (noise units) centred at (x, y).
     double mean_over_footprint(double x, double y, double w) const;
+    // The same from log2 w (-inf for a point), for callers that have it.
+    double mean_over_footprint_log2(double x, double y, double log2_w) const;
 
     const BaseNoise& base() const { return base_; }
     const FractalOptions& options() const { return options_; }
@@ -80,6 +94,8 @@ private:
 
     BaseNoise base_;
     FractalOptions options_;
+    std::optional<BoxCorrelation> correlation_;
+    double log2_cutoff_ = 0;
     std::vector<double> periods_, log2_periods_, amplitudes_, scales_, shift_x_, shift_y_;
 };
 

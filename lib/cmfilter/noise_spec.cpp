@@ -1,6 +1,8 @@
 #include "cmfilter/noise_spec.h"
 
+#include "cmfilter/gabor_box_correlation.h"
 #include "cmfilter/gradient_noise.h"
+#include "cmfilter/lattice_box_correlation.h"
 #include "cmfilter/value_noise.h"
 
 #include <cerrno>
@@ -187,11 +189,13 @@ Expected<FractalNoise> make_noise(const NoiseSpec& spec)
     case NoiseBasis::Gradient: {
         const GradientNoise g(spec.seed);
         base.evaluate = [g](double x, double y) { return g(x, y); };
+        base.correlation = gradient_noise_box_correlation();
         break;
     }
     case NoiseBasis::Value: {
         const ValueNoise v(spec.seed);
         base.evaluate = [v](double x, double y) { return v(x, y); };
+        base.correlation = value_noise_box_correlation();
         break;
     }
     case NoiseBasis::Gabor: {
@@ -199,6 +203,7 @@ Expected<FractalNoise> make_noise(const NoiseSpec& spec)
         if (!g) return g.error();
         base.period = g->period();
         base.evaluate = [g = *g](double x, double y) { return g(x, y); };
+        base.correlation = gabor_noise_box_correlation(spec.gabor);
         break;
     }
     }

@@ -2,9 +2,10 @@
 // noise with every octave evaluated, on the same points, timed in the same
 // process:
 //   unfiltered  f(x, y): all octaves of the fractal sum
-//   filtered    mean_over_footprint(x, y, w) (octaves finer than w faded,
-//               and not evaluated once gone) + sigma from a per-LOD table
-//               + T(mean, sigma) from a colour table (eq. 10)
+//   filtered    FilteredNoise::filter(x, y, w): the filtered mean (each
+//               octave's prediction of its footprint mean, octaves past their
+//               cutoff not evaluated) and sigma from a per-LOD table, then
+//               T(mean, sigma) from a colour table (eq. 10)
 // and, to compare like with like, the unfiltered noise mapped through C0.
 // Footprint widths are drawn uniformly in LOD over the sigma table's range
 // (1/16 of the finest octave's period to 4 base periods), and also reported
@@ -91,8 +92,8 @@ int main(int argc, char** argv)
             const auto filtered_run = [&] {
                 double acc = 0;
                 for (int i = 0; i < kPoints; ++i) {
-                    const double m = filtered.mean_over_footprint(xs[i], ys[i], ws[i]);
-                    acc += table->lookup(m, filtered.unresolved_sigma(ws[i]), &counters).g;
+                    const FilteredNoise::Parameters p = filtered.filter(xs[i], ys[i], ws[i]);
+                    acc += table->lookup(p.mean, p.sigma, &counters).g;
                 }
                 sink += acc;
             };

@@ -10,7 +10,9 @@
 //   oracle-2048    T(m, s) with the 2048-value table at the footprint's own
 //                  sample mean m and standard deviation s of the reference
 //                  samples: what is left is the Gaussian assumption alone,
-//                  without the errors of the faded mean and of the sigma table;
+//                  without the errors of the filtered mean and of the sigma table;
+//   mean-oracle-2048  T(m, sigma): the footprint's own mean with the table's
+//                  sigma: what exact footprint means would leave;
 //   reference      the average of C0(f(x)) over 32 x 32 jittered-stratified
 //                  samples inside the square footprint of width w.
 // Footprints: squares of width w = p_0 2^L, L from log2(p_{N-1} / 16 / p_0)
@@ -59,8 +61,8 @@ struct Map {
     GaussianColorTable table, table2048;
 };
 
-const char* const kMethods[] = {"gaussian", "gaussian-2048", "naive", "oracle-2048"};
-constexpr int kMethodCount = 4;
+const char* const kMethods[] = {"gaussian", "gaussian-2048", "naive", "oracle-2048", "mean-oracle-2048"};
+constexpr int kMethodCount = 5;
 
 }  // namespace
 
@@ -162,7 +164,8 @@ int main(int argc, char** argv)
                 const Rgb estimates[kMethodCount] = {maps[m].table.lookup(mean, sigma),
                                                      maps[m].table2048.lookup(mean, sigma),
                                                      maps[m].map.evaluate(mean),
-                                                     maps[m].table2048.lookup(sample_mean, sample_sigma)};
+                                                     maps[m].table2048.lookup(sample_mean, sample_sigma),
+                                                     maps[m].table2048.lookup(sample_mean, sigma)};
                 for (int e = 0; e < kMethodCount; ++e)
                     errors[(m * kMethodCount + e) * points + j] = ciede2000_linear_rgb(reference, estimates[e]);
             }

@@ -111,20 +111,23 @@ TEST_CASE("turbulence is non-negative with mean the gain-weighted mean of the ab
     CHECK(std::fabs(f_sum / count - expected) < 5 * sd_abs * 1.875 / std::sqrt(count) + 0.01 * expected);
 }
 
-TEST_CASE("filtered mean is the point value for small footprints and the octave mean for large ones")
+TEST_CASE("filtered mean is the point value for a point and the octave mean past the cutoff")
 {
     for (FractalSum sum : {FractalSum::Fbm, FractalSum::Turbulence}) {
         const FractalNoise f = make_fractal(sum);
         const double finest = f.octave_period(f.options().octaves - 1);
+        const double cutoff = f.term_correlation().cutoff();
         double mean_sum = 0;
         for (int i = 0; i < f.options().octaves; ++i) mean_sum += f.octave_amplitude(i) * f.octave_mean();
         for (double x : {0.3, 17.25, 140.9})
             for (double y : {5.5, 99.01}) {
-                // Every octave whole (w <= finest period / 2): the same sum, exactly.
+                // A point keeps every octave whole: the same sum, exactly.
                 CHECK(f.mean_over_footprint(x, y, 0.0) == f(x, y));
-                CHECK(f.mean_over_footprint(x, y, 0.5 * finest) == f(x, y));
-                // Every octave faded (w >= base period): the octave means, exactly.
-                CHECK(f.mean_over_footprint(x, y, 1.0) == mean_sum);
+                // A footprint 1/4096 of the finest period: the box mean moves by
+                // O(w^2) of the curvature, far below 1e-5.
+                CHECK(std::fabs(f.mean_over_footprint(x, y, finest / 4096) - f(x, y)) < 1e-5);
+                // Every octave past its cutoff: the octave means, exactly.
+                CHECK(f.mean_over_footprint(x, y, cutoff * f.base_period()) == mean_sum);
                 CHECK(f.mean_over_footprint(x, y, 1e6) == mean_sum);
             }
         if (sum == FractalSum::Fbm) CHECK(mean_sum == 0.0);
@@ -132,10 +135,62 @@ TEST_CASE("filtered mean is the point value for small footprints and the octave 
     }
 }
 
+TEST_CASE("filtered mean leaves a residual uncorrelated with every octave it evaluates")
+{
+    // The filtered mean is the least-squares prediction of the footprint's
+    // box mean T from the octaves' centre values, so the residual T - mean_w
+    // must be uncorrelated with each t_i(x) (the normal equations). T by
+    // 32 x 32 midpoint quadrature, 1500 footprints; |corr| within 4 standard
+    // errors (1 / sqrt(1500)) plus the quadrature's share.
+    for (FractalSum sum : {FractalSum::Fbm, FractalSum::Turbulence}) {
+        const FractalNoise f = make_fractal(sum, 3);
+        for (double w : {0.25, 0.5, 1.0}) {
+            std::mt19937_64 rng(99);
+            std::uniform_real_distribution<double> centre(0.0, 256.0);
+            const int n = 1500, q = 32;
+            std::vector<double> residual(n);
+            std::vector<std::vector<double>> term(3, std::vector<double>(n));
+            for (int k = 0; k < n; ++k) {
+                const double x = centre(rng), y = centre(rng);
+                double box = 0;
+                for (int a = 0; a < q; ++a)
+                    for (int b = 0; b < q; ++b) box += f(x + w * ((a + 0.5) / q - 0.5), y + w * ((b + 0.5) / q - 0.5));
+                residual[static_cast<std::size_t>(k)] = box / (q * q) - f.mean_over_footprint(x, y, w);
+                for (int i = 0; i < 3; ++i) term[static_cast<std::size_t>(i)][static_cast<std::size_t>(k)] = f.octave(i, x, y);
+            }
+            for (int i = 0; i < 3; ++i) {
+                if (f.resolved_fraction(i, w) == 0.0) continue;  // not evaluated
+                const auto& t = term[static_cast<std::size_t>(i)];
+                double rm = 0, tm = 0;
+                for (int k = 0; k < n; ++k) {
+                    rm += residual[static_cast<std::size_t>(k)];
+                    tm += t[static_cast<std::size_t>(k)];
+                }
+                rm /= n;
+                tm /= n;
+                double srr = 0, stt = 0, srt = 0;
+                for (int k = 0; k < n; ++k) {
+                    const double dr = residual[static_cast<std::size_t>(k)] - rm, dt = t[static_cast<std::size_t>(k)] - tm;
+                    srr += dr * dr;
+                    stt += dt * dt;
+                    srt += dr * dt;
+                }
+                const double corr = srt / std::sqrt(srr * stt);
+                CAPTURE(to_string(sum));
+                CAPTURE(w);
+                CAPTURE(i);
+                CAPTURE(corr);
+                CHECK(std::fabs(corr) < 4.0 / std::sqrt(double(n)) + 0.02);
+            }
+        }
+    }
+}
+
 TEST_CASE("filtered mean is continuous in the footprint width")
 {
-    // |d mean / d ln w| <= sum_i gain^i |t_i - mu| max|smoothstep'| / ln 2
-    //                  <= 2 (0.71 + 0.71) 1.5 / 0.69 ~ 6.2,
+    // |d mean / d ln w| <= sum_i gain^i |t_i - mu| max|d beta / d log2 k| / ln 2
+    //                  <= 2 (0.71 + 0.71) 1.5 / 0.69 ~ 6.2 (beta falls from 1
+    // to 0 over about two octaves, its taper at most 0.05 over half of one),
     // so a step from w to w (1 + 1e-6) moves the mean by at most ~6.2e-6: a
     // jump above 1e-5 anywhere would be popping.
     for (FractalSum sum : {FractalSum::Fbm, FractalSum::Turbulence}) {
@@ -152,19 +207,22 @@ TEST_CASE("filtered mean is continuous in the footprint width")
     }
 }
 
-TEST_CASE("resolved fraction falls smoothly from one to zero over one octave")
+TEST_CASE("resolved fraction is one at a point, the same function of w / p_i for every octave, and zero past the cutoff")
 {
     const FractalNoise f = make_fractal(FractalSum::Fbm, 3);
+    const double cutoff = f.term_correlation().cutoff();
     for (int i = 0; i < 3; ++i) {
         const double p = f.octave_period(i);
-        CHECK(f.resolved_fraction(i, 0.5 * p) == 1.0);
-        CHECK(f.resolved_fraction(i, p) == 0.0);
-        // Midway in log2: smoothstep(1/2) = 1/2, exactly representable inputs.
-        CHECK(std::fabs(f.resolved_fraction(i, p * std::sqrt(0.5)) - 0.5) < 1e-12);
+        CHECK(f.resolved_fraction(i, 0.0) == 1.0);
+        CHECK(f.resolved_fraction(i, cutoff * p) == 0.0);
+        for (double k : {0.1, 0.5, 1.0, 1.7})
+            CHECK(f.resolved_fraction(i, k * p) == doctest::Approx(f.resolved_fraction(0, k * f.octave_period(0))));
+        // Falls from 1 while the footprint grows to two periods (gradient
+        // noise: the correlation is positive and decreasing there).
         double previous = 1.0;
-        for (double t = -1; t <= 0; t += 1.0 / 64) {
+        for (double t = -6; t <= 1; t += 1.0 / 64) {
             const double a = f.resolved_fraction(i, p * std::exp2(t));
-            CHECK(a <= previous);  // monotone
+            CHECK(a <= previous + 1e-12);
             previous = a;
         }
     }
@@ -225,4 +283,10 @@ TEST_CASE("filtered noise looks the sigma table up at log2 of width over base pe
     CHECK(std::fabs(filtered.unresolved_sigma(4.0 * std::sqrt(2.0)) - 0.525) < 1e-12);  // LOD 1/2
     CHECK(filtered.unresolved_sigma(0.0) == 0.0);      // a point: LOD -inf, the first node
     CHECK(filtered.mean_over_footprint(1.5, 2.5, 0.25) == f->mean_over_footprint(1.5, 2.5, 0.25));
+    // filter() gives both at once, from one log2 of the width.
+    for (double w : {0.0, 0.01, 0.25, 4.0 * std::sqrt(2.0), 100.0}) {
+        const FilteredNoise::Parameters p = filtered.filter(1.5, 2.5, w);
+        CHECK(p.mean == f->mean_over_footprint(1.5, 2.5, w));
+        CHECK(p.sigma == doctest::Approx(filtered.unresolved_sigma(w)).epsilon(1e-14));
+    }
 }
