@@ -1,0 +1,101 @@
+// A scene for `cmfilter render` (docs/scene-format.md): a pinhole camera, one
+// directional light, and surfaces (infinite planes, spheres), each with a
+// texture mapping and a material: a colour map driven by a procedural noise
+// or a texture. Plain data: load_scene (scene_loading.h) fills and checks it;
+// every path in it is absolute or relative to the working directory (the
+// loader resolves the file's own relative paths against the scene's folder).
+#pragma once
+
+#include "cmfilter/color.h"
+#include "cmfilter/vec3.h"
+#include "cmfilter/wrap_mode.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace cmfilter {
+
+struct SceneCamera {
+    Vec3 position;
+    Vec3 look_at;
+    Vec3 up{0, 1, 0};
+    double fov_degrees = 60;  // vertical field of view, in (0, 180)
+    int width = 640;          // pixels, 1 .. kMaxImageSide
+    int height = 360;
+};
+
+inline constexpr int kMaxImageSide = 16384;
+inline constexpr long long kMaxImagePixels = 1LL << 26;  // 64 Mi pixels
+
+struct SceneLight {
+    Vec3 direction{0, 1, 0};  // towards the light; unit length after loading
+    Rgb radiance{1, 1, 1};    // irradiance on a surface facing the light
+    Rgb ambient{0, 0, 0};     // added to every lit surface point, times albedo
+};
+
+// Texture coordinates (u, v) of a surface point p, in the units the driver
+// reads (noise units for a procedural driver, texture repeats for a texture,
+// which wraps at 1).
+//   planar:    u = <p - origin, u_axis>, v = <p - origin, v_axis>
+//              (the axes' lengths are texture units per scene unit);
+//   spherical: u = u_scale * phi / (2 pi), v = v_scale * theta / pi, with phi
+//              the longitude about the sphere's y axis from +x, in [0, 2 pi),
+//              and theta the polar angle from +y, in [0, pi].
+enum class MappingKind { Planar, Spherical };
+struct TextureMapping {
+    MappingKind kind = MappingKind::Planar;
+    Vec3 origin;
+    Vec3 u_axis{1, 0, 0};
+    Vec3 v_axis{0, 0, 1};
+    double u_scale = 1, v_scale = 1;
+};
+
+// A colour map: a baked table (bake-colormap output), or a map image laid
+// over [domain_min, domain_max] whose table the renderer bakes itself.
+struct ColorMapSource {
+    std::string table_path;  // set: a baked table; else the image fields
+    std::string image_path;
+    double domain_min = 0, domain_max = 1;
+    WrapMode wrap = WrapMode::Clamp;
+    std::string colorspace;  // empty: decided from the file
+};
+
+// The driver f: a procedural noise (spec text, noise_spec.h) with an
+// optional baked sigma table (bake-noise output; absent: baked when
+// rendering), or a texture: a moment pyramid (bake-moments output) or a
+// driver image (its moments baked when rendering).
+enum class DriverKind { Noise, Moments, Image };
+struct DriverSource {
+    DriverKind kind = DriverKind::Noise;
+    std::string noise_spec;
+    std::string sigma_table_path;
+    std::string moments_path;
+    std::string image_path;
+};
+
+struct Material {
+    ColorMapSource colormap;
+    DriverSource driver;
+};
+
+enum class SurfaceKind { Plane, Sphere };
+struct Surface {
+    SurfaceKind kind = SurfaceKind::Plane;
+    Vec3 point;               // plane: a point on it
+    Vec3 normal{0, 1, 0};     // plane: unit length after loading
+    Vec3 center;              // sphere
+    double radius = 1;        // sphere: > 0
+    TextureMapping mapping;
+    Material material;
+};
+
+struct Scene {
+    std::string path;  // the file it was loaded from (messages, metadata)
+    SceneCamera camera;
+    SceneLight light;
+    std::vector<Surface> surfaces;
+    Rgb background{0, 0, 0};
+};
+
+}  // namespace cmfilter

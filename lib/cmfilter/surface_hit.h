@@ -1,0 +1,39 @@
+// Ray-surface intersection for the renderer's planes and spheres, with the
+// hit's texture coordinates and their screen-space derivatives, transferred
+// from the camera's ray differentials (Igehy 1999, eq. 10-12): for a hit at
+// distance t with unit normal n,
+//     dt/dx = -<dp_origin/dx + t dd/dx, n> / <d, n>,   dp/dx = t dd/dx + dt/dx d
+// (the origin is fixed for a pinhole camera), then (du, dv)/dx from the
+// mapping's Jacobian at p (planar: the axes; spherical: the derivatives of
+// longitude and polar angle). The same for y.
+#pragma once
+
+#include "cmfilter/camera.h"
+#include "cmfilter/scene.h"
+#include "cmfilter/vec3.h"
+
+#include <optional>
+
+namespace cmfilter {
+
+struct SurfaceHit {
+    double t = 0;      // distance along the unit ray direction
+    Vec3 point;
+    Vec3 normal;       // unit, facing the ray's origin
+    double u = 0, v = 0;  // texture coordinates (scene.h, TextureMapping)
+    Vec3 dp_dx, dp_dy;    // world-space footprint of one pixel step
+    double du_dx = 0, dv_dx = 0, du_dy = 0, dv_dy = 0;
+};
+
+// The nearest hit with t > t_min, or none. The derivatives are those of a
+// camera ray (CameraRay's differentials).
+std::optional<SurfaceHit> intersect(const Surface& surface, const CameraRay& ray, double t_min = 1e-9);
+
+// The nearest hit over all surfaces and its surface's index.
+struct SceneHit {
+    SurfaceHit hit;
+    int surface = -1;
+};
+std::optional<SceneHit> intersect_scene(const Scene& scene, const CameraRay& ray);
+
+}  // namespace cmfilter
