@@ -6,6 +6,15 @@
 // (the origin is fixed for a pinhole camera), then (du, dv)/dx from the
 // mapping's Jacobian at p (planar: the axes; spherical: the derivatives of
 // longitude and polar angle). The same for y.
+//
+// The derivatives are always finite. Each is capped at +-kDerivativeLimit:
+// as a ray grazes a surface, <d, n> -> 0 and the footprint is unbounded. The
+// spherical mapping's |d phi| is capped at a full turn, 2 pi (reached near and
+// on the poles, where the footprint wraps around the axis and longitude is
+// undefined), and |d theta| at the angle the step subtends, |dq| (reached on
+// the poles). Across the seam phi = 0, u jumps by u_scale; its derivatives do
+// not. A spherical mapping on a plane (which scene loading forbids) maps the
+// direction of p from mapping.origin.
 #pragma once
 
 #include "cmfilter/camera.h"
@@ -15,6 +24,10 @@
 #include <optional>
 
 namespace cmfilter {
+
+// The cap on every derivative of a SurfaceHit, in scene or texture units per
+// pixel: a renderer may read it as "the footprint covers everything".
+inline constexpr double kDerivativeLimit = 1e30;
 
 struct SurfaceHit {
     double t = 0;      // distance along the unit ray direction

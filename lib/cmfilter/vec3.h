@@ -28,5 +28,12 @@ inline Vec3 cross(const Vec3& a, const Vec3& b)
 inline double length(const Vec3& v) { return std::sqrt(dot(v, v)); }
 // v / |v|; the caller guarantees |v| > 0.
 inline Vec3 normalize(const Vec3& v) { return v / length(v); }
+// The derivative of normalize(v) along a change dv of v:
+// (|v|^2 dv - <v, dv> v) / |v|^3; the caller guarantees |v| > 0.
+inline Vec3 normalize_derivative(const Vec3& v, const Vec3& dv)
+{
+    const double length2 = dot(v, v);
+    return (length2 * dv - dot(v, dv) * v) / (length2 * std::sqrt(length2));
+}
 
 }  // namespace cmfilter
