@@ -1,0 +1,164 @@
+#include "cmfilter/render.h"
+
+#include "cmfilter/camera.h"
+#include "cmfilter/noise_lattice.h"
+#include "cmfilter/parallel_for.h"
+#include "cmfilter/stopwatch.h"
+#include "cmfilter/surface_hit.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <mutex>
+#include <numeric>
+
+namespace cmfilter {
+
+const char* to_string(RenderMethod method)
+{
+    switch (method) {
+    case RenderMethod::Naive: return "naive";
+    case RenderMethod::Gaussian: return "gaussian";
+    case RenderMethod::Supersample: return "supersample";
+    case RenderMethod::Reference: return "reference";
+    }
+    return "gaussian";
+}
+
+Expected<RenderMethod> parse_render_method(const std::string& text)
+{
+    for (RenderMethod m : {RenderMethod::Naive, RenderMethod::Gaussian, RenderMethod::Supersample, RenderMethod::Reference})
+        if (text == to_string(m)) return m;
+    return bad_input("method '" + text + "' is unknown (expected naive, gaussian, supersample or reference)");
+}
+
+namespace {
+
+Rgb shade(const Rgb& albedo, const Vec3& normal, const SceneLight& light)
+{
+    const double lambert = std::max(0.0, dot(normal, light.direction));
+    return {albedo.r * (light.radiance.r * lambert + light.ambient.r),
+            albedo.g * (light.radiance.g * lambert + light.ambient.g),
+            albedo.b * (light.radiance.b * lambert + light.ambient.b)};
+}
+
+// Sub-pixel positions in [0, 1)^2 for pixel `index`: a jittered n x n grid
+// when count = n^2, else N rooks with shuffled columns.
+void sample_positions(int count, std::uint64_t seed, std::uint64_t index, std::vector<double>& xs,
+                      std::vector<double>& ys)
+{
+    std::uint64_t state = seed ^ (index * 0x9E3779B97F4A7C15ull);
+    splitmix64(state);
+    xs.resize(static_cast<std::size_t>(count));
+    ys.resize(static_cast<std::size_t>(count));
+    const int n = static_cast<int>(std::lround(std::sqrt(static_cast<double>(count))));
+    if (n * n == count) {
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                const auto k = static_cast<std::size_t>(j * n + i);
+                xs[k] = (i + unit_interval(splitmix64(state))) / n;
+                ys[k] = (j + unit_interval(splitmix64(state))) / n;
+            }
+        return;
+    }
+    std::vector<int> columns(static_cast<std::size_t>(count));
+    std::iota(columns.begin(), columns.end(), 0);
+    for (int k = count - 1; k > 0; --k)  // Fisher-Yates with the pixel's own stream
+        std::swap(columns[static_cast<std::size_t>(k)],
+                  columns[static_cast<std::size_t>(splitmix64(state) % static_cast<std::uint64_t>(k + 1))]);
+    for (int k = 0; k < count; ++k) {
+        ys[static_cast<std::size_t>(k)] = (k + unit_interval(splitmix64(state))) / count;
+        xs[static_cast<std::size_t>(k)] = (columns[static_cast<std::size_t>(k)] + unit_interval(splitmix64(state))) / count;
+    }
+}
+
+}  // namespace
+
+Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMaterial>& materials,
+                               const RenderOptions& options)
+{
+    if (materials.size() != scene.surfaces.size())
+        return bad_input("render: " + std::to_string(materials.size()) + " materials for " +
+                         std::to_string(scene.surfaces.size()) + " surfaces");
+    if (options.samples < 1 || options.samples > kMaxSamples)
+        return bad_input("--spp " + std::to_string(options.samples) + " is out of range (expected 1 to " +
+                         std::to_string(kMaxSamples) + ")");
+    for (const SurfaceMaterial& m : materials)
+        if (!m.noise) return bad_input("render: every surface needs a procedural driver for now");
+    auto camera = Camera::create(scene.camera);
+    if (!camera) return camera.error();
+
+    RenderedImage image;
+    image.width = camera->width();
+    image.height = camera->height();
+    image.method = options.method;
+    const bool supersampled = options.method == RenderMethod::Supersample || options.method == RenderMethod::Reference;
+    image.samples = options.method == RenderMethod::Reference ? std::max(options.samples, kReferenceSamples)
+                    : supersampled                            ? options.samples
+                                                              : 1;
+    const std::size_t pixels = static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height);
+    image.rgb.assign(3 * pixels, 0.0f);
+    image.hit.assign(pixels, 0);
+    image.distance.assign(pixels, 0.0f);
+    image.mean.assign(pixels, 0.0f);
+    image.sigma.assign(pixels, 0.0f);
+    image.lod.assign(pixels, 0.0f);
+
+    std::atomic<int> rows_done{0};
+    std::mutex progress_mutex;
+    const Stopwatch clock;
+    parallel_for(image.height, options.threads, [&](int y) {
+        std::vector<double> xs, ys;
+        for (int x = 0; x < image.width; ++x) {
+            const std::size_t p = static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) +
+                                  static_cast<std::size_t>(x);
+            // The centre ray: geometry, footprint and the AOVs.
+            const CameraRay centre = camera->ray(x + 0.5, y + 0.5);
+            const auto hit = intersect_scene(scene, centre);
+            Rgb colour = scene.background;
+            if (hit) {
+                const SurfaceHit& h = hit->hit;
+                const SurfaceMaterial& m = materials[static_cast<std::size_t>(hit->surface)];
+                const double w = footprint_width(options.footprint, h.du_dx, h.dv_dx, h.du_dy, h.dv_dy);
+                const FilteredNoise::Parameters f = m.noise->filter(h.u, h.v, w);
+                image.hit[p] = 1;
+                image.distance[p] = static_cast<float>(h.t);
+                image.mean[p] = static_cast<float>(f.mean);
+                image.sigma[p] = static_cast<float>(f.sigma);
+                image.lod[p] = static_cast<float>(m.noise->lod(w));
+                if (options.method == RenderMethod::Naive)
+                    colour = shade(m.map.evaluate(f.mean), h.normal, scene.light);
+                else if (options.method == RenderMethod::Gaussian)
+                    colour = shade(m.table.lookup(f.mean, f.sigma), h.normal, scene.light);
+            }
+            if (supersampled) {
+                sample_positions(image.samples, options.seed, p, xs, ys);
+                Rgb sum;
+                for (int s = 0; s < image.samples; ++s) {
+                    const CameraRay ray = camera->ray(x + xs[static_cast<std::size_t>(s)], y + ys[static_cast<std::size_t>(s)]);
+                    const auto sample_hit = intersect_scene(scene, ray);
+                    if (!sample_hit) {
+                        sum += scene.background;
+                        continue;
+                    }
+                    const SurfaceHit& h = sample_hit->hit;
+                    const SurfaceMaterial& m = materials[static_cast<std::size_t>(sample_hit->surface)];
+                    sum += shade(m.map.evaluate(m.noise->noise()(h.u, h.v)), h.normal, scene.light);
+                }
+                colour = (1.0 / image.samples) * sum;
+            }
+            image.rgb[3 * p] = static_cast<float>(colour.r);
+            image.rgb[3 * p + 1] = static_cast<float>(colour.g);
+            image.rgb[3 * p + 2] = static_cast<float>(colour.b);
+        }
+        const int done = ++rows_done;
+        if (options.progress) {
+            const std::lock_guard<std::mutex> lock(progress_mutex);
+            options.progress(static_cast<double>(done) / image.height);
+        }
+    });
+    image.seconds = clock.elapsed_ms() / 1000.0;
+    return image;
+}
+
+}  // namespace cmfilter

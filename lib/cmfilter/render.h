@@ -1,0 +1,65 @@
+// `cmfilter render`: a scene (scene.h) seen through its pinhole camera, each
+// pixel's colour-mapped surface filtered over the pixel's own footprint
+// (docs/render.md). Every method uses the same box pixel:
+//   naive        one ray through the pixel centre; C0(mean), the colour map
+//                of the driver's filtered mean over the footprint;
+//   gaussian     the same ray; T(mean, sigma) (eq. 10), sigma from the
+//                noise's table at the footprint's LOD (sec. 4.2);
+//   supersample  N rays per pixel (a jittered N = n x n grid when N is a
+//                square, else N rooks: one sample per row and column of an
+//                N x N grid, columns shuffled), each point-evaluating C0(f(x))
+//                and shaded on its own; misses count as background;
+//   reference    supersample with at least 1024 rays (the paper's 32 x 32).
+// The footprint is the parallelogram of the ray differentials in texture
+// space (surface_hit.h), reduced to one width (footprint_width.h).
+// Shading: Lambertian, albedo x (radiance max(0, <n, l>) + ambient).
+// Deterministic for a given seed, whatever the thread count.
+#pragma once
+
+#include "cmfilter/error.h"
+#include "cmfilter/footprint_width.h"
+#include "cmfilter/scene.h"
+#include "cmfilter/scene_materials.h"
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace cmfilter {
+
+enum class RenderMethod { Naive, Gaussian, Supersample, Reference };
+const char* to_string(RenderMethod method);
+Expected<RenderMethod> parse_render_method(const std::string& text);
+
+inline constexpr int kReferenceSamples = 1024;
+inline constexpr int kMaxSamples = 1 << 16;
+
+struct RenderOptions {
+    RenderMethod method = RenderMethod::Gaussian;
+    int samples = 16;  // supersample: N >= 1; reference: max(N, 1024)
+    std::uint64_t seed = 0;
+    int threads = 0;   // 0: all cores
+    FootprintWidth footprint = FootprintWidth::Rms;
+    std::function<void(double)> progress;  // fraction of rows done, may be empty
+};
+
+struct RenderedImage {
+    int width = 0, height = 0;
+    std::vector<float> rgb;    // scene-linear, top row first
+    // Per pixel, from the ray through its centre (every method): whether it
+    // hit a surface, its distance, and the filtered mean, sigma and LOD of
+    // the driver there (0 where nothing is hit).
+    std::vector<unsigned char> hit;
+    std::vector<float> distance, mean, sigma, lod;
+    RenderMethod method = RenderMethod::Gaussian;
+    int samples = 1;           // rays per pixel
+    double seconds = 0;        // wall time of the pixel loop
+};
+
+// BadInput for a sample count outside 1 .. kMaxSamples, or a material
+// count that does not match the scene.
+Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMaterial>& materials,
+                               const RenderOptions& options);
+
+}  // namespace cmfilter
