@@ -1,0 +1,413 @@
+#include "cmfilter/scene_loading.h"
+
+#include "cmfilter/json_document.h"
+#include "cmfilter/json_reading.h"
+#include "cmfilter/noise_spec.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <tuple>
+
+namespace cmfilter {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Two vectors whose angle has a sine below this count as parallel.
+constexpr double kParallelSine = 1e-6;
+
+bool is_zero(const Vec3& v) { return v.x == 0 && v.y == 0 && v.z == 0; }
+
+// v scaled so that its largest component is +-1: its length and cross
+// products neither overflow nor underflow. v is non-zero.
+Vec3 rescaled(const Vec3& v) { return v / std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)}); }
+
+bool nearly_parallel(const Vec3& a, const Vec3& b)
+{
+    const Vec3 ra = rescaled(a), rb = rescaled(b);
+    return !(length(cross(ra, rb)) > kParallelSine * length(ra) * length(rb));
+}
+
+std::string vector_text(const Vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}).dump(); }
+
+// "<pointer>/<key>: expected <expectation>, got <v>" for a vector member that
+// may be absent (its default).
+Error vector_error(const JsonObject& object, const std::string& key, const Vec3& v, const std::string& expectation)
+{
+    return object.value().member_error(
+        key, "expected " + expectation + ", got " + vector_text(v) + (object.has(key) ? "" : " (the default)"));
+}
+
+// ---- values -----------------------------------------------------------------
+
+Expected<Vec3> read_vec3(const JsonValue& value)
+{
+    auto numbers = read_numbers(value, 3);
+    if (!numbers) return numbers.error();
+    return Vec3{(*numbers)[0], (*numbers)[1], (*numbers)[2]};
+}
+
+Expected<Vec3> read_nonzero_vec3(const JsonValue& value)
+{
+    auto v = read_vec3(value);
+    if (v && is_zero(*v)) return value.expected("a non-zero vector");
+    return v;
+}
+
+// A non-zero vector, normalised.
+Expected<Vec3> read_direction(const JsonValue& value)
+{
+    auto v = read_nonzero_vec3(value);
+    if (!v) return v;
+    return normalize(rescaled(*v));
+}
+
+Expected<Rgb> read_color(const JsonValue& value)
+{
+    auto numbers = read_numbers(value, 3);
+    if (!numbers) return numbers.error();
+    const std::vector<double>& c = *numbers;
+    if (!(c[0] >= 0 && c[1] >= 0 && c[2] >= 0)) return value.expected("a colour of 3 numbers >= 0");
+    return Rgb{c[0], c[1], c[2]};
+}
+
+Expected<double> read_positive(const JsonValue& value)
+{
+    auto number = read_number(value);
+    if (number && !(*number > 0)) return value.expected("a number > 0");
+    return number;
+}
+
+Expected<double> read_fov_degrees(const JsonValue& value)
+{
+    auto number = read_number(value);
+    if (number && !(*number > 0 && *number < 180)) return value.expected("a number of degrees in (0, 180)");
+    return number;
+}
+
+// An existing file named relative to the scene's folder (or absolute): the
+// folder joined with the name, as the scene's own path names the folder.
+Expected<std::string> read_file_path(const JsonValue& value, const fs::path& scene_folder)
+{
+    auto name = read_string(value);
+    if (!name) return name;
+    if (name->empty()) return value.expected("a file path");
+    const fs::path resolved = scene_folder / *name;
+    std::error_code ec;
+    const fs::file_status status = fs::status(resolved, ec);
+    if (!fs::exists(status)) return value.error("file not found: " + resolved.string());
+    if (fs::is_directory(status)) return value.error("expected a file, got a directory: " + resolved.string());
+    return resolved.string();
+}
+
+// ---- camera -----------------------------------------------------------------
+
+Status read_resolution(const JsonObject& camera_object, SceneCamera& camera)
+{
+    const auto value = camera_object.find("resolution");
+    if (!value) return ok();
+    auto numbers = read_numbers(*value, 2);
+    if (!numbers) return numbers.error();
+    const std::string side_limit = " in 1.." + std::to_string(kMaxImageSide) + " (an integer)";
+    for (std::size_t i = 0; i < 2; ++i) {
+        const double side = (*numbers)[i];
+        if (!(side >= 1 && side <= kMaxImageSide && side == std::floor(side)))
+            return value->element(i).expected((i == 0 ? "a width" : "a height") + side_limit);
+    }
+    const int width = static_cast<int>((*numbers)[0]), height = static_cast<int>((*numbers)[1]);
+    const long long pixels = static_cast<long long>(width) * height;
+    if (pixels > kMaxImagePixels)
+        return value->error("expected width * height <= " + std::to_string(kMaxImagePixels) + " pixels, got " +
+                            std::to_string(width) + " x " + std::to_string(height) + " = " +
+                            std::to_string(pixels));
+    camera.width = width;
+    camera.height = height;
+    return ok();
+}
+
+// The view direction look_at - position is finite and non-zero, and up is not
+// parallel to it.
+Status check_view(const JsonObject& camera_object, const SceneCamera& camera)
+{
+    const Vec3 view = camera.look_at - camera.position;
+    if (!std::isfinite(view.x) || !std::isfinite(view.y) || !std::isfinite(view.z))
+        return camera_object.value().member("look_at").expected("a point at a finite distance from position");
+    if (is_zero(view))
+        return camera_object.value().member("look_at").expected(
+            "a point other than position (the view direction look_at - position is zero)");
+    if (nearly_parallel(camera.up, view))
+        return vector_error(camera_object, "up", camera.up,
+                            "a vector not parallel to the view direction look_at - position = " + vector_text(view));
+    return ok();
+}
+
+Expected<SceneCamera> read_camera(const JsonValue& value)
+{
+    auto object = JsonObject::read(value, {"position", "look_at", "up", "fov_degrees", "resolution"});
+    if (!object) return object.error();
+    SceneCamera camera;
+    Status status = object->read_required("position", camera.position, read_vec3);
+    if (status) status = object->read_required("look_at", camera.look_at, read_vec3);
+    if (status) status = object->read_optional("up", camera.up, read_nonzero_vec3);
+    if (status) status = object->read_optional("fov_degrees", camera.fov_degrees, read_fov_degrees);
+    if (status) status = read_resolution(*object, camera);
+    if (status) status = check_view(*object, camera);
+    if (!status) return status.error();
+    return camera;
+}
+
+// ---- light ------------------------------------------------------------------
+
+Expected<SceneLight> read_light(const JsonValue& value)
+{
+    auto object = JsonObject::read(value, {"direction", "radiance", "ambient"});
+    if (!object) return object.error();
+    SceneLight light;
+    Status status = object->read_optional("direction", light.direction, read_direction);
+    if (status) status = object->read_optional("radiance", light.radiance, read_color);
+    if (status) status = object->read_optional("ambient", light.ambient, read_color);
+    if (!status) return status.error();
+    return light;
+}
+
+// ---- material ---------------------------------------------------------------
+
+Expected<WrapMode> read_wrap(const JsonValue& value)
+{
+    auto name = read_string(value);
+    if (!name) return name.error();
+    auto wrap = parse_wrap_mode(*name);
+    if (!wrap) return value.error(wrap.error().message);
+    return wrap;
+}
+
+Expected<std::pair<double, double>> read_domain(const JsonValue& value)
+{
+    auto numbers = read_numbers(value, 2);
+    if (!numbers) return numbers.error();
+    if (!((*numbers)[0] < (*numbers)[1])) return value.expected("[min, max] with min < max");
+    return std::pair((*numbers)[0], (*numbers)[1]);
+}
+
+Expected<std::string> read_colorspace(const JsonValue& value)
+{
+    auto name = read_string(value);
+    if (name && name->empty()) return value.expected("a colour space name");
+    return name;
+}
+
+Expected<ColorMapSource> read_colormap(const JsonValue& value, const fs::path& scene_folder)
+{
+    auto object = JsonObject::read(value, {"table", "image", "domain", "wrap", "colorspace"});
+    if (!object) return object.error();
+    const auto read_path = [&](const JsonValue& v) { return read_file_path(v, scene_folder); };
+    ColorMapSource colormap;
+    Status status = object->require_one_of({"table", "image"});
+    if (status && object->has("table")) {
+        status = object->reject_any_of({"domain", "wrap", "colorspace"},
+                                       "applies only to an image colour map, not to a table");
+        if (status) status = object->read_required("table", colormap.table_path, read_path);
+    } else if (status) {
+        std::pair<double, double> domain;
+        status = object->read_required("image", colormap.image_path, read_path);
+        if (status) status = object->read_required("domain", domain, read_domain);
+        if (status) status = object->read_optional("wrap", colormap.wrap, read_wrap);
+        if (status) status = object->read_optional("colorspace", colormap.colorspace, read_colorspace);
+        if (status) std::tie(colormap.domain_min, colormap.domain_max) = domain;
+    }
+    if (!status) return status.error();
+    return colormap;
+}
+
+// The spec text as written, once parse_noise_spec accepts it.
+Expected<std::string> read_noise_spec(const JsonValue& value)
+{
+    auto text = read_string(value);
+    if (!text) return text;
+    if (auto spec = parse_noise_spec(*text); !spec)
+        return value.error("expected a noise spec (docs/noise.md), got " + value.json().dump() + ": " +
+                           spec.error().message);
+    return text;
+}
+
+Expected<DriverSource> read_driver(const JsonValue& value, const fs::path& scene_folder)
+{
+    auto object = JsonObject::read(value, {"noise", "sigma_table", "moments", "image"});
+    if (!object) return object.error();
+    const auto read_path = [&](const JsonValue& v) { return read_file_path(v, scene_folder); };
+    DriverSource driver;
+    Status status = object->require_one_of({"noise", "moments", "image"});
+    if (!status) return status.error();
+    if (object->has("noise")) {
+        driver.kind = DriverKind::Noise;
+        status = object->read_required("noise", driver.noise_spec, read_noise_spec);
+        if (status) status = object->read_optional("sigma_table", driver.sigma_table_path, read_path);
+    } else {
+        const bool moments = object->has("moments");
+        driver.kind = moments ? DriverKind::Moments : DriverKind::Image;
+        status = object->reject_any_of({"sigma_table"}, std::string("applies only to a noise driver, not to ") +
+                                                            (moments ? "moments" : "an image"));
+        if (status && moments) status = object->read_required("moments", driver.moments_path, read_path);
+        if (status && !moments) status = object->read_required("image", driver.image_path, read_path);
+    }
+    if (!status) return status.error();
+    return driver;
+}
+
+Expected<Material> read_material(const JsonValue& value, const fs::path& scene_folder)
+{
+    auto object = JsonObject::read(value, {"colormap", "driver"});
+    if (!object) return object.error();
+    Material material;
+    Status status = object->read_required(
+        "colormap", material.colormap, [&](const JsonValue& v) { return read_colormap(v, scene_folder); });
+    if (status)
+        status = object->read_required("driver", material.driver,
+                                       [&](const JsonValue& v) { return read_driver(v, scene_folder); });
+    if (!status) return status.error();
+    return material;
+}
+
+// ---- surfaces ---------------------------------------------------------------
+
+Expected<MappingKind> read_mapping_kind(const JsonValue& value)
+{
+    return read_choice<MappingKind>(value, {{"planar", MappingKind::Planar}, {"spherical", MappingKind::Spherical}});
+}
+
+Status read_planar_axes(const JsonObject& object, TextureMapping& mapping)
+{
+    Status status = object.read_optional("origin", mapping.origin, read_vec3);
+    if (status) status = object.read_optional("u_axis", mapping.u_axis, read_nonzero_vec3);
+    if (status) status = object.read_optional("v_axis", mapping.v_axis, read_nonzero_vec3);
+    if (status && nearly_parallel(mapping.u_axis, mapping.v_axis))
+        return vector_error(object, "v_axis", mapping.v_axis,
+                            "a vector not parallel to u_axis " + vector_text(mapping.u_axis));
+    return status;
+}
+
+MappingKind default_mapping_kind(SurfaceKind surface)
+{
+    return surface == SurfaceKind::Sphere ? MappingKind::Spherical : MappingKind::Planar;
+}
+
+Expected<TextureMapping> read_mapping(const JsonValue& value, SurfaceKind surface)
+{
+    auto object = JsonObject::read(value);
+    if (!object) return object.error();
+    TextureMapping mapping;
+    mapping.kind = default_mapping_kind(surface);
+    Status status = object->read_optional("type", mapping.kind, read_mapping_kind);
+    if (status && mapping.kind == MappingKind::Spherical && surface != SurfaceKind::Sphere)
+        return value.member("type").expected("\"planar\" (spherical mapping needs a sphere)");
+    if (status && mapping.kind == MappingKind::Planar) {
+        status = object->allow_only({"type", "origin", "u_axis", "v_axis"});
+        if (status) status = read_planar_axes(*object, mapping);
+    } else if (status) {
+        status = object->allow_only({"type", "u_scale", "v_scale"});
+        if (status) status = object->read_optional("u_scale", mapping.u_scale, read_positive);
+        if (status) status = object->read_optional("v_scale", mapping.v_scale, read_positive);
+    }
+    if (!status) return status.error();
+    return mapping;
+}
+
+// A planar mapping on a plane gives a usable texture only if the plane's
+// directions reach every (u, v): u_axis x v_axis must not lie in the plane.
+Status check_planar_mapping_on_plane(const JsonObject& surface_object, const Surface& plane)
+{
+    const TextureMapping& mapping = plane.mapping;
+    const Vec3 axes_normal = cross(rescaled(mapping.u_axis), rescaled(mapping.v_axis));
+    if (std::fabs(dot(plane.normal, axes_normal)) > kParallelSine * length(axes_normal)) return ok();
+    return surface_object.value().member_error(
+        "mapping", "expected u_axis and v_axis whose cross product is not parallel to the plane (else the "
+                   "texture is constant along a line of the plane), got u_axis " + vector_text(mapping.u_axis) +
+                       " and v_axis " + vector_text(mapping.v_axis) + " on a plane of normal " +
+                       vector_text(plane.normal) + (surface_object.has("mapping") ? "" : " (the default mapping)"));
+}
+
+Expected<SurfaceKind> read_surface_kind(const JsonValue& value)
+{
+    return read_choice<SurfaceKind>(value, {{"plane", SurfaceKind::Plane}, {"sphere", SurfaceKind::Sphere}});
+}
+
+Expected<Surface> read_surface(const JsonValue& value, const fs::path& scene_folder)
+{
+    auto object = JsonObject::read(value);
+    if (!object) return object.error();
+    Surface surface;
+    Status status = object->read_required("type", surface.kind, read_surface_kind);
+    if (status && surface.kind == SurfaceKind::Plane) {
+        status = object->allow_only({"type", "point", "normal", "mapping", "material"});
+        if (status) status = object->read_required("point", surface.point, read_vec3);
+        if (status) status = object->read_required("normal", surface.normal, read_direction);
+    } else if (status) {
+        status = object->allow_only({"type", "center", "radius", "mapping", "material"});
+        if (status) status = object->read_required("center", surface.center, read_vec3);
+        if (status) status = object->read_required("radius", surface.radius, read_positive);
+    }
+    surface.mapping.kind = default_mapping_kind(surface.kind);
+    if (status)
+        status = object->read_optional("mapping", surface.mapping,
+                                       [&](const JsonValue& v) { return read_mapping(v, surface.kind); });
+    if (status && surface.kind == SurfaceKind::Plane && surface.mapping.kind == MappingKind::Planar)
+        status = check_planar_mapping_on_plane(*object, surface);
+    if (status)
+        status = object->read_required("material", surface.material,
+                                       [&](const JsonValue& v) { return read_material(v, scene_folder); });
+    if (!status) return status.error();
+    return surface;
+}
+
+Expected<std::vector<Surface>> read_surfaces(const JsonValue& value, const fs::path& scene_folder)
+{
+    if (!value.json().is_array() || value.json().empty()) return value.expected("a non-empty array of surfaces");
+    std::vector<Surface> surfaces;
+    for (std::size_t i = 0; i < value.json().size(); ++i) {
+        auto surface = read_surface(value.element(i), scene_folder);
+        if (!surface) return surface.error();
+        surfaces.push_back(std::move(*surface));
+    }
+    return surfaces;
+}
+
+}  // namespace
+
+Expected<Scene> load_scene(const std::string& path)
+{
+    std::error_code ec;
+    if (fs::is_directory(path, ec)) return io_error(path + ": cannot read the scene: it is a directory");
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        return io_error(path + ": cannot read the scene: " +
+                        (fs::exists(path, ec) ? "the file cannot be opened" : "no such file"));
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad()) return io_error(path + ": cannot read the scene: a read failed");
+    return parse_scene(text.str(), path);
+}
+
+Expected<Scene> parse_scene(const std::string& json_text, const std::string& path)
+{
+    auto document = parse_json_document(json_text, path);
+    if (!document) return document.error();
+    auto root = JsonObject::read(JsonValue(*document, path), {"camera", "light", "background", "surfaces"});
+    if (!root) return root.error();
+    const fs::path scene_folder = fs::path(path).parent_path();
+    Scene scene;
+    scene.path = path;
+    Status status = root->read_required("camera", scene.camera, read_camera);
+    if (status) status = root->read_optional("light", scene.light, read_light);
+    if (status) status = root->read_optional("background", scene.background, read_color);
+    if (status)
+        status = root->read_required("surfaces", scene.surfaces,
+                                     [&](const JsonValue& v) { return read_surfaces(v, scene_folder); });
+    if (!status) return status.error();
+    return scene;
+}
+
+}  // namespace cmfilter
