@@ -1,0 +1,80 @@
+// Speed against accuracy for `cmfilter bench` (docs/render.md): one scene
+// rendered by every method and configuration, each timed (the pixel loop's
+// wall time, fastest of `repeats`) and compared per pixel (CIEDE2000) with a
+// reference of `reference_samples` rays per pixel, over the pixels whose
+// centre ray hits a surface, and per distance band: the hit pixels split in
+// three equal-count bands by the centre ray's distance (near, middle,
+// horizon). A second reference with another seed measures how repeatable the
+// reference itself is (the issue asks for <= 0.2 mean CIEDE2000).
+#pragma once
+
+#include "cmfilter/error.h"
+#include "cmfilter/error_summary.h"
+#include "cmfilter/gaussian_color_table.h"
+#include "cmfilter/render.h"
+#include "cmfilter/scene.h"
+#include "cmfilter/scene_materials.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace cmfilter {
+
+struct BenchConfiguration {
+    RenderMethod method = RenderMethod::Gaussian;
+    int samples = 1;                  // supersample: rays per pixel
+    int table_values = 256;           // gaussian: the table every surface is re-baked with
+    int table_sigmas = 256;
+    SigmaSpacing spacing = SigmaSpacing::Sqrt;
+    FootprintWidth footprint = FootprintWidth::Rms;  // naive, gaussian
+    std::string label() const;        // e.g. "gaussian 64x64 sqrt", "gaussian 256x256 sqrt major", "supersample 16"
+};
+
+// naive; gaussian with 16 x 16, 64 x 64 and 256 x 256 tables, sqrt and linear
+// sigma spacing (rms footprint width), and the 256 x 256 sqrt table with the
+// area, major and minor footprint widths; supersample with 1, 4, 16, 64 and
+// 256 rays per pixel.
+std::vector<BenchConfiguration> default_bench_configurations();
+
+struct BandedError {
+    ErrorSummary all, near, middle, horizon;
+};
+
+struct BenchRow {
+    BenchConfiguration configuration;
+    double seconds = 0;           // pixel loop, fastest of the repeats
+    std::size_t table_bytes = 0;  // gaussian: float32 RGB tables of every surface
+    BandedError error;            // against the reference
+};
+
+struct SceneBench {
+    std::string scene;
+    int width = 0, height = 0;
+    std::size_t pixels_hit = 0;
+    double near_distance = 0, horizon_distance = 0;  // band limits: the hit distances' terciles
+    double reference_seconds = 0;
+    int reference_samples = 0;
+    BandedError reference_repeatability;  // reference (seed) against reference (seed + 1)
+    std::vector<BenchRow> rows;
+};
+
+struct BenchOptions {
+    std::vector<BenchConfiguration> configurations = default_bench_configurations();
+    int reference_samples = kReferenceSamples;
+    int repeats = 3;
+    std::uint64_t seed = 0;
+    int threads = 0;
+    std::function<void(const std::string&)> note;  // one line per finished render, may be empty
+};
+
+// `materials` are re-baked in place for each gaussian configuration (their
+// colour maps stay).
+Expected<SceneBench> bench_scene(const Scene& scene, std::vector<SurfaceMaterial>& materials,
+                                 const BenchOptions& options);
+
+// CSV: header and one row per configuration (and the reference's
+// repeatability as method "reference-repeat"), for every scene.
+std::string bench_csv(const std::vector<SceneBench>& benches);
+
+}  // namespace cmfilter

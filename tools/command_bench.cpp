@@ -1,0 +1,119 @@
+// cmfilter bench: speed against accuracy on scenes (docs/render.md): every
+// method and configuration timed and compared with a 1024-ray reference,
+// overall and per distance band; a CSV, and a log-log chart per scene.
+#include "command.h"
+
+#include "cmfilter/atomic_output.h"
+#include "cmfilter/bench_chart.h"
+#include "cmfilter/render_benchmark.h"
+#include "cmfilter/scene_loading.h"
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+namespace cmfilter::cli {
+
+namespace {
+
+struct BenchArgs {
+    std::vector<std::string> scenes;
+    std::string csv;
+    std::string charts;
+    std::string resolution;
+    int reference_samples = kReferenceSamples;
+    int repeats = 3;
+    std::uint64_t seed = 0;
+    std::string ocio_config;
+    int threads = 0;
+    bool quiet = false;
+};
+
+Status write_text(const std::string& path, const std::string& text)
+{
+    auto out = AtomicOutput::begin(path);
+    if (!out) return out.error();
+    {
+        std::ofstream f(out->temp_path());
+        f << text;
+        if (!f) return io_error("cannot write '" + path + "'");
+    }
+    return out->commit();
+}
+
+Status run(const BenchArgs& args)
+{
+    if (auto st = check_output_path(args.csv, ".csv"); !st) return st;
+    if (!args.charts.empty() && !std::filesystem::is_directory(args.charts))
+        return io_error("--charts '" + args.charts + "' is not a folder");
+    if (args.reference_samples < kReferenceSamples || args.reference_samples > kMaxSamples)
+        return bad_input("--reference-spp " + std::to_string(args.reference_samples) + " is out of range (expected " +
+                         std::to_string(kReferenceSamples) + " to " + std::to_string(kMaxSamples) + ")");
+    std::optional<std::pair<int, int>> size;
+    if (!args.resolution.empty()) {
+        auto parsed = parse_size("--resolution", args.resolution);
+        if (!parsed) return parsed.error();
+        size = *parsed;
+    }
+    auto config = load_color_config(args.ocio_config);
+    if (!config) return config.error();
+
+    BenchOptions options;
+    options.reference_samples = args.reference_samples;
+    options.repeats = args.repeats;
+    options.seed = args.seed;
+    options.threads = args.threads;
+    if (!args.quiet) options.note = [](const std::string& line) { std::cerr << "bench: " << line << "\n"; };
+
+    std::vector<SceneBench> benches;
+    for (const std::string& path : args.scenes) {
+        auto scene = load_scene(path);
+        if (!scene) return scene.error();
+        if (size) {
+            scene->camera.width = size->first;
+            scene->camera.height = size->second;
+        }
+        MaterialOptions mo;
+        mo.threads = args.threads;
+        mo.note = options.note;
+        auto materials = prepare_materials(*scene, *config, mo);
+        if (!materials) return materials.error();
+        auto bench = bench_scene(*scene, *materials, options);
+        if (!bench) return bench.error();
+        if (!args.charts.empty()) {
+            const std::string png =
+                (std::filesystem::path(args.charts) / (std::filesystem::path(path).stem().string() + ".png")).string();
+            if (auto st = write_bench_chart(*bench, png); !st) return st;
+            if (!args.quiet) std::cerr << "bench: wrote " << png << "\n";
+        }
+        benches.push_back(std::move(*bench));
+    }
+    if (auto st = write_text(args.csv, bench_csv(benches)); !st) return st;
+    if (!args.quiet) std::cout << "wrote " << args.csv << ": " << benches.size() << " scene(s)\n";
+    return ok();
+}
+
+}  // namespace
+
+Command setup_bench(CLI::App& parent)
+{
+    auto args = std::make_shared<BenchArgs>();
+    CLI::App* app = parent.add_subcommand("bench", "Time every render method on scenes and measure its error against a reference");
+    app->add_option("scenes", args->scenes, "Scene files (JSON, docs/scene-format.md)")->required();
+    app->add_option("--csv", args->csv, "CSV to write: one row per scene and configuration")->required();
+    app->add_option("--charts", args->charts, "Folder for one chart per scene (SCENE.png; needs gnuplot)");
+    app->add_option("--resolution", args->resolution, "Render every scene at WxH instead of its own resolution");
+    app->add_option("--reference-spp", args->reference_samples, "Rays per pixel of the reference (>= 1024)")
+        ->capture_default_str();
+    app->add_option("--repeats", args->repeats, "Timed runs per configuration (the fastest counts)")
+        ->capture_default_str();
+    app->add_option("--seed", args->seed, "Seed of the sub-pixel samples")->capture_default_str();
+    app->add_option("--ocio-config", args->ocio_config,
+                    "OpenColorIO config (default: $OCIO if set, else the built-in config)");
+    app->add_option("--threads", args->threads, "Threads (0: all cores)")->capture_default_str();
+    app->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
+    return {app, [args] { return run(*args); }};
+}
+
+}  // namespace cmfilter::cli
