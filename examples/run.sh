@@ -6,7 +6,10 @@
 #     512 x 512 blurred noise, 16-bit), and filter it with every map at LOD 0,
 #     3 and 6 by each method (naive, the paper's gaussian, and the box-filtered
 #     reference), writing sRGB images and how far each method is from the
-#     reference (CIEDE2000) for a person to look at.
+#     reference (CIEDE2000) for a person to look at;
+#  3. render the bundled ground-plane scene (fBm through the terrain map, to
+#     the horizon) by the naive and gaussian methods, and time every method
+#     against a 1024-ray reference at 160 x 90 (cmfilter bench: CSV + chart).
 #   bash examples/run.sh CMFILTER_BINARY OUTPUT_DIR
 set -euo pipefail
 cmfilter=${1:?usage: run.sh CMFILTER_BINARY OUTPUT_DIR}
@@ -43,6 +46,16 @@ for map in "$root"/luts/*.png; do
   done
 done
 cat "$summary"
+
+mkdir -p "$out/render"
+scene="$root/examples/scenes/plane-fbm-terrain.json"
+for method in naive gaussian; do
+  "$cmfilter" render "$scene" --method "$method" -o "$out/render/plane-fbm-terrain-$method.png"
+done
+"$cmfilter" bench "$scene" --resolution 160x90 --repeats 1 --csv "$out/render/bench.csv" --charts "$out/render" -q
+echo
+echo "bench at 160 x 90 (mean CIEDE2000 against the 1024-ray reference, render seconds):"
+awk -F, 'NR > 1 && $2 != "reference" { printf "  %-32s %8.3f dE00 %10.4f s\n", $2, $11, $10 }' "$out/render/bench.csv"
 echo
 echo "example outputs in $out:"
 echo "  tables/*.exr      prefiltered colour-map tables (open with oiiotool --info -v or cmfilter info)"
@@ -50,3 +63,5 @@ echo "  tables/*.txt      what cmfilter info says of each"
 echo "  previews/*.png    each table in sRGB: value left to right, sigma 0 (top) to sigma-max (bottom)"
 echo "  filtered/*.png    the bundled driver through each map at LOD 0, 3, 6 by each method (sRGB)"
 echo "  filtered/summary.txt  mean CIEDE2000 of naive and gaussian against the reference"
+echo "  render/*.png      the ground-plane scene by naive and gaussian; render/plane-fbm-terrain.png: error vs time"
+echo "  render/bench.csv  every method's time and error against the reference (docs/render.md)"

@@ -26,7 +26,7 @@ std::string quoted(const std::string& text)
 std::string bench_chart_script(const SceneBench& bench, const std::string& data_path, const std::string& png_path)
 {
     std::ostringstream s;
-    s << "set terminal pngcairo size 1000,650 font 'sans,11'\n"
+    s << "set terminal pngcairo size 900,650 font 'sans,11'\n"
       << "set output " << quoted(png_path) << "\n"
       << "set title " << quoted(std::filesystem::path(bench.scene).filename().string() + ", " +
                                 std::to_string(bench.width) + " x " + std::to_string(bench.height) +
@@ -34,7 +34,7 @@ std::string bench_chart_script(const SceneBench& bench, const std::string& data_
                                 "-ray reference")
       << " noenhanced\n"
       << "set xrange [*:" << 2 * bench.reference_seconds << "]\n"
-      << "set logscale xy\nset grid\nset key outside right top noenhanced\n"
+      << "set logscale xy\nset grid\nset key inside left bottom box opaque noenhanced font 'sans,10'\n"
       << "set xlabel 'render time (s, pixel loop)'\nset ylabel 'mean CIEDE2000 over hit pixels'\n"
       << "set datafile separator '\\t'\n"
       << "set arrow from " << bench.reference_seconds << ", graph 0 to " << bench.reference_seconds
@@ -46,7 +46,7 @@ std::string bench_chart_script(const SceneBench& bench, const std::string& data_
       << "     '' using ($1 == 2 ? $3 : 1/0):4 with points pt 5 ps 1.4 lc rgb 'dark-cyan' title 'gaussian (linear sigma spacing)', \\\n"
       << "     '' using ($1 == 3 ? $3 : 1/0):4 with linespoints pt 13 ps 1.4 lc rgb 'dark-green' title 'supersample (rays per pixel)', \\\n"
       << "     '' using ($1 == 4 ? $3 : 1/0):4 with points pt 11 ps 1.4 lc rgb 'orange' title 'gaussian 256x256, other footprint widths', \\\n"
-      << "     '' using 3:4:2 with labels offset 0.8,0.6 left font 'sans,9' notitle, \\\n"
+      << "     '' using ($1 == 2 ? 1/0 : $3):4:2 with labels offset 0.8,0.6 left font 'sans,9' notitle, \\\n"
       << "     f(x) with lines dt 2 lc rgb 'black' title 'target 1.0'\n";
     return s.str();
 }

@@ -1,0 +1,44 @@
+"""Summary of a `cmfilter bench` CSV against the render targets (docs/render.md):
+gaussian (256x256 sqrt table, rms footprint) against naive, the supersample of
+about gaussian's time, and the reference.
+    python3 render_bench_summary.py render-bench.csv"""
+import csv
+import math
+import os
+import sys
+
+rows = list(csv.DictReader(open(sys.argv[1])))
+scenes = []
+for r in rows:
+    if r["scene"] not in scenes:
+        scenes.append(r["scene"])
+
+
+def pick(scene, configuration):
+    for r in rows:
+        if r["scene"] == scene and r["configuration"] == configuration:
+            return r
+    raise KeyError(configuration)
+
+
+def f(r, key):
+    return float(r[key])
+
+
+print("| scene | gaussian mean (near / middle / horizon) | naive mean | naive / gaussian error | gaussian / naive time "
+      "| supersample at gaussian's time | reference time / gaussian | reference repeat |")
+print("|---|---|---:|---:|---:|---|---:|---:|")
+for s in scenes:
+    g = pick(s, "gaussian 256x256 sqrt")
+    n = pick(s, "naive")
+    ref = pick(s, "reference")
+    rep = pick(s, "reference-repeat")
+    ss = [r for r in rows if r["scene"] == s and r["method"] == "supersample"]
+    ss.sort(key=lambda r: f(r, "seconds"))
+    # The supersample whose time is nearest gaussian's (in log time).
+    near = min(ss, key=lambda r: abs(math.log(f(r, "seconds") / f(g, "seconds"))))
+    print("| %s | %.2f (%.2f / %.2f / %.2f) | %.2f | %.2f | %.2f | %s spp: %.2f in %.1fx the time (%.2fx gaussian's error) | %.0f | %.3f |" % (
+        os.path.basename(s), f(g, "mean"), f(g, "near_mean"), f(g, "middle_mean"), f(g, "horizon_mean"),
+        f(n, "mean"), f(n, "mean") / f(g, "mean"), f(g, "seconds") / f(n, "seconds"),
+        near["spp"], f(near, "mean"), f(near, "seconds") / f(g, "seconds"), f(near, "mean") / f(g, "mean"),
+        f(ref, "seconds") / f(g, "seconds"), f(rep, "mean")))
