@@ -1,5 +1,6 @@
 #include "cmfilter/color_pyramid.h"
 
+#include "cmfilter/bilinear_texels.h"
 #include "cmfilter/box_pyramid.h"
 
 #include <cmath>
@@ -35,36 +36,25 @@ ColorPyramid ColorPyramid::build(const ColorPyramidOptions& options)
     return out;
 }
 
+Rgb ColorPyramid::stored(int k, int x, int y) const
+{
+    const Level& L = levels_[k];
+    const float* p = L.rgb.data() + (static_cast<std::size_t>(y) * L.w + x) * 3;
+    return {p[0], p[1], p[2]};
+}
+
 Rgb ColorPyramid::texel(int k, int x, int y) const
 {
     const Level& L = levels_[k];
-    const auto wrap = [&](int i, int n, bool& inside) {
-        if (i >= 0 && i < n) return i;
-        if (wrap_ == TextureWrap::Periodic) return ((i % n) + n) % n;
-        if (wrap_ == TextureWrap::Black) inside = false;
-        return i < 0 ? 0 : n - 1;
-    };
-    bool inside = true;
-    x = wrap(x, L.w, inside);
-    y = wrap(y, L.h, inside);
-    if (!inside) return outside_;
-    const float* p = L.rgb.data() + (static_cast<std::size_t>(y) * L.w + x) * 3;
-    return {p[0], p[1], p[2]};
+    x = wrap_texel(x, L.w, wrap_);
+    y = wrap_texel(y, L.h, wrap_);
+    return x < 0 || y < 0 ? outside_ : stored(k, x, y);
 }
 
 Rgb ColorPyramid::bilinear(int k, double s, double t) const
 {
     const Level& L = levels_[k];
-    // Texel centres at (x + 0.5) / w: continuous texel coordinates.
-    const double u = s * L.w - 0.5, v = t * L.h - 0.5;
-    const double fx = std::floor(u), fy = std::floor(v);
-    const int x0 = static_cast<int>(fx), y0 = static_cast<int>(fy);
-    const double a = u - fx, b = v - fy;
-    Rgb out = ((1 - a) * (1 - b)) * texel(k, x0, y0);
-    if (a > 0) out += (a * (1 - b)) * texel(k, x0 + 1, y0);
-    if (b > 0) out += ((1 - a) * b) * texel(k, x0, y0 + 1);
-    if (a > 0 && b > 0) out += (a * b) * texel(k, x0 + 1, y0 + 1);
-    return out;
+    return bilinear_texels(s, t, L.w, L.h, wrap_, outside_, [&](int x, int y) { return stored(k, x, y); });
 }
 
 Rgb ColorPyramid::lookup(double s, double t, double lod) const

@@ -49,6 +49,7 @@ private:
         int w = 0, h = 0;
         std::vector<float> rgb;
     };
+    Rgb stored(int k, int x, int y) const;  // inside the level
     Rgb bilinear(int k, double s, double t) const;
     std::vector<Level> levels_;
     TextureWrap wrap_ = TextureWrap::Clamp;

@@ -6,9 +6,9 @@
 #include "cmfilter/gaussian_color_table_file.h"
 #include "cmfilter/histogram_pyramid.h"
 #include "cmfilter/image_reading.h"
+#include "cmfilter/moment_source.h"
 #include "cmfilter/moment_texture.h"
 #include "cmfilter/parallel_for.h"
-#include "cmfilter/sha256.h"
 #include "cmfilter/table_color_map.h"
 
 #include <algorithm>
@@ -61,29 +61,15 @@ Expected<DriverImage> read_source_driver(const ApplyOptions& options, const Mome
     if (!overridden && !std::filesystem::is_regular_file(path, ec))
         return io_error("cannot read driver '" + path + "' recorded in '" + options.moments_path +
                         "' (cmfilter:source): no such file; pass --driver PATH to give its location");
-    DriverReadOptions read;
-    read.path = path;
-    read.channel = std::to_string(info.channel_index);
-    read.nonfinite = info.nonfinite_replaced > 0 ? NonFinitePolicy::Zero : NonFinitePolicy::Error;
-    read.threads = threads;
-    auto driver = read_driver(read);
+    auto driver = read_moment_source(path, options.moments_path, info, threads);
     if (!driver) return driver.error();
-    if (driver->width != info.width || driver->height != info.height)
-        return bad_input("driver '" + path + "' is " + std::to_string(driver->width) + " x " +
-                         std::to_string(driver->height) + " but '" + options.moments_path +
-                         "' was baked from " + std::to_string(info.width) + " x " +
-                         std::to_string(info.height) + " (expected the same size)");
-    auto hash = sha256_file_hex(path);
-    if (!hash) return hash.error();
-    if (*hash != info.source_sha256) {
-        const std::string what = "driver '" + path + "' (sha256 " + *hash + ") is not the file '" +
-                                 options.moments_path + "' was baked from (sha256 " +
-                                 info.source_sha256 + ")";
+    if (!is_moment_source(*driver, info)) {
+        const std::string what = moment_source_changed(path, *driver, options.moments_path, info);
         if (!overridden)
             return bad_input(what + "; re-bake the moments, or pass --driver PATH to use it anyway");
         warnings.push_back(what + "; using it as --driver asks");
     }
-    return driver;
+    return std::move(driver->image);
 }
 
 }  // namespace

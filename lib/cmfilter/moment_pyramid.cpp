@@ -18,19 +18,38 @@ int moment_level_extent(int extent, int level) { return box_level_extent(extent,
 
 int moment_level_count(int width, int height) { return box_level_count(width, height); }
 
-Expected<MomentBakeResult> bake_moment_pyramid(const MomentBakeOptions& options)
+namespace {
+
+// What can be refused before the driver is read.
+Status check_bake_options(const MomentBakeOptions& options)
 {
     if (options.tile_size < 1)
         return bad_input("tile size " + std::to_string(options.tile_size) + " is invalid (expected >= 1)");
-    auto out = AtomicOutput::begin(options.output_path);
-    if (!out) return out.error();
-    MomentBakeResult result;
+    return check_output_path(options.output_path, "");
+}
+
+}  // namespace
+
+Expected<MomentBakeResult> bake_moment_pyramid(const MomentBakeOptions& options)
+{
+    if (auto st = check_bake_options(options); !st) return st.error();
     const Stopwatch t0;
     auto hashed = read_driver_and_hash(options.driver_read());
     if (!hashed) return hashed.error();
-    DriverImage* driver = &hashed->image;
-    const std::string* digest = &hashed->sha256;
-    result.read_ms = t0.elapsed_ms();
+    const double read_ms = t0.elapsed_ms();
+    auto result = bake_moment_pyramid(options, *hashed);
+    if (result) result->read_ms = read_ms;
+    return result;
+}
+
+Expected<MomentBakeResult> bake_moment_pyramid(const MomentBakeOptions& options, const HashedDriver& hashed)
+{
+    if (auto st = check_bake_options(options); !st) return st.error();
+    auto out = AtomicOutput::begin(options.output_path);
+    if (!out) return out.error();
+    MomentBakeResult result;
+    const DriverImage* driver = &hashed.image;
+    const std::string* digest = &hashed.sha256;
 
     const int W = driver->width, H = driver->height;
     MomentPyramidInfo& info = result.info;

@@ -42,6 +42,11 @@ struct MomentBakeResult {
 
 Expected<MomentBakeResult> bake_moment_pyramid(const MomentBakeOptions& options);
 
+// The same from a driver already read (and hashed) from options.driver_path
+// with options.driver_read(), for a caller that keeps its texels too; read_ms
+// is 0.
+Expected<MomentBakeResult> bake_moment_pyramid(const MomentBakeOptions& options, const HashedDriver& driver);
+
 // Extent of level k along an axis of `extent` level-0 texels: max(1, extent >> k).
 int moment_level_extent(int extent, int level);
 // Levels down to 1 x 1: floor(log2(max(width, height))) + 1.

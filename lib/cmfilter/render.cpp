@@ -72,6 +72,31 @@ void sample_positions(int count, std::uint64_t seed, std::uint64_t index, std::v
     }
 }
 
+// The driver over the centre ray's footprint: its mean and sigma (sec. 4.2)
+// and the footprint's LOD. A noise takes one width for the footprint
+// (footprint_width.h); a texture's moment pyramid takes the anisotropic
+// footprint itself, and the width only names its LOD in level-0 texels.
+struct FilteredDriver {
+    double mean = 0, sigma = 0, lod = 0;
+};
+
+FilteredDriver filter_driver(const SurfaceMaterial& m, const SurfaceHit& h, FootprintWidth choice)
+{
+    const double w = footprint_width(choice, h.du_dx, h.dv_dx, h.du_dy, h.dv_dy);
+    if (m.texture) {
+        const MomentSample f = m.texture->filter(h.u, h.v, h.du_dx, h.dv_dx, h.du_dy, h.dv_dy);
+        return {f.mean, f.sigma, m.texture->lod(w)};
+    }
+    const FilteredNoise::Parameters f = m.noise->filter(h.u, h.v, w);
+    return {f.mean, f.sigma, m.noise->lod(w)};
+}
+
+// The driver at a point, for the supersampled methods.
+double driver_value(const SurfaceMaterial& m, double u, double v)
+{
+    return m.texture ? m.texture->value(u, v) : m.noise->noise()(u, v);
+}
+
 }  // namespace
 
 Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMaterial>& materials,
@@ -84,7 +109,7 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
         return bad_input("--spp " + std::to_string(options.samples) + " is out of range (expected 1 to " +
                          std::to_string(kMaxSamples) + ")");
     for (const SurfaceMaterial& m : materials)
-        if (!m.noise) return bad_input("render: every surface needs a procedural driver for now");
+        if (!m.noise && !m.texture) return bad_input("render: every surface needs a driver (a noise or a texture)");
     auto camera = Camera::create(scene.camera);
     if (!camera) return camera.error();
 
@@ -119,13 +144,12 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
             if (hit) {
                 const SurfaceHit& h = hit->hit;
                 const SurfaceMaterial& m = materials[static_cast<std::size_t>(hit->surface)];
-                const double w = footprint_width(options.footprint, h.du_dx, h.dv_dx, h.du_dy, h.dv_dy);
-                const FilteredNoise::Parameters f = m.noise->filter(h.u, h.v, w);
+                const FilteredDriver f = filter_driver(m, h, options.footprint);
                 image.hit[p] = 1;
                 image.distance[p] = static_cast<float>(h.t);
                 image.mean[p] = static_cast<float>(f.mean);
                 image.sigma[p] = static_cast<float>(f.sigma);
-                image.lod[p] = static_cast<float>(m.noise->lod(w));
+                image.lod[p] = static_cast<float>(f.lod);
                 if (options.method == RenderMethod::Naive)
                     colour = shade(m.map.evaluate(f.mean), h.normal, scene.light);
                 else if (options.method == RenderMethod::Gaussian)
@@ -143,7 +167,7 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
                     }
                     const SurfaceHit& h = sample_hit->hit;
                     const SurfaceMaterial& m = materials[static_cast<std::size_t>(sample_hit->surface)];
-                    sum += shade(m.map.evaluate(m.noise->noise()(h.u, h.v)), h.normal, scene.light);
+                    sum += shade(m.map.evaluate(driver_value(m, h.u, h.v)), h.normal, scene.light);
                 }
                 colour = (1.0 / image.samples) * sum;
             }

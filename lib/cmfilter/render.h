@@ -4,14 +4,19 @@
 //   naive        one ray through the pixel centre; C0(mean), the colour map
 //                of the driver's filtered mean over the footprint;
 //   gaussian     the same ray; T(mean, sigma) (eq. 10), sigma from the
-//                noise's table at the footprint's LOD (sec. 4.2);
+//                noise's table at the footprint's LOD, or from a texture's
+//                moment pyramid (sec. 4.2);
 //   supersample  N rays per pixel (a jittered N = n x n grid when N is a
 //                square, else N rooks: one sample per row and column of an
 //                N x N grid, columns shuffled), each point-evaluating C0(f(x))
-//                and shaded on its own; misses count as background;
+//                (a texture: f bilinear in its level 0) and shaded on its
+//                own; misses count as background;
 //   reference    supersample with at least 1024 rays (the paper's 32 x 32).
 // The footprint is the parallelogram of the ray differentials in texture
-// space (surface_hit.h), reduced to one width (footprint_width.h).
+// space (surface_hit.h): a noise reduces it to one width (footprint_width.h),
+// a texture's moments are looked up over the parallelogram itself
+// (TextureSystem's anisotropic filter, filtered_texture.h), and the width
+// gives only its LOD AOV, log2 of the width in level-0 texels.
 // Shading: Lambertian, albedo x (radiance max(0, <n, l>) + ambient).
 // Deterministic for a given seed, whatever the thread count.
 #pragma once
@@ -57,8 +62,8 @@ struct RenderedImage {
     double seconds = 0;        // wall time of the pixel loop
 };
 
-// BadInput for a sample count outside 1 .. kMaxSamples, or a material
-// count that does not match the scene.
+// BadInput for a sample count outside 1 .. kMaxSamples, a material count
+// that does not match the scene, or a material without a driver.
 Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMaterial>& materials,
                                const RenderOptions& options);
 

@@ -2,12 +2,17 @@
 
 #include "cmfilter/color_map_loading.h"
 #include "cmfilter/gaussian_color_table_file.h"
+#include "cmfilter/moment_pyramid.h"
+#include "cmfilter/moment_source.h"
 #include "cmfilter/noise_sigma_bake.h"
 #include "cmfilter/noise_sigma_table_file.h"
 #include "cmfilter/noise_spec.h"
 #include "cmfilter/table_color_map.h"
 
+#include <filesystem>
+#include <memory>
 #include <sstream>
+#include <system_error>
 
 namespace cmfilter {
 
@@ -56,12 +61,23 @@ Status load_colormap(const Scene& scene, std::size_t i, const ColorConfig& confi
     return ok();
 }
 
-Status load_driver(const Scene& scene, std::size_t i, const MaterialOptions& options, SurfaceMaterial& m)
+// A clamp map whose domain misses the driver's values [lo, hi] (`what` says
+// how they were measured) shows one end colour everywhere: surely the wrong
+// domain.
+Status check_domain(const Scene& scene, std::size_t i, const SurfaceMaterial& m, double lo, double hi,
+                    const std::string& what)
+{
+    if (m.map.wrap != WrapMode::Clamp || !(hi < m.map.vmin || lo > m.map.vmax)) return ok();
+    std::ostringstream s;
+    s << where(scene, i, "colormap") << "the colour map's domain [" << m.map.vmin << ", " << m.map.vmax
+      << "] does not meet the driver's values (" << what << ": [" << lo << ", " << hi << "])";
+    return bad_input(s.str());
+}
+
+Status load_noise_driver(const Scene& scene, std::size_t i, const MaterialOptions& options, SurfaceMaterial& m)
 {
     const DriverSource& driver = scene.surfaces[i].material.driver;
     const std::string prefix = where(scene, i, "driver");
-    if (driver.kind != DriverKind::Noise)
-        return bad_input(prefix + "texture drivers (moments, image) are not supported by render yet; use a noise");
     auto spec = parse_noise_spec(driver.noise_spec);
     if (!spec) return located(spec.error(), prefix + "noise: ");
     auto noise = make_noise(*spec);
@@ -90,20 +106,85 @@ Status load_driver(const Scene& scene, std::size_t i, const MaterialOptions& opt
         m.sigma_table_baked = true;
     }
 
-    // A clamp map whose domain misses mean +- 3 sigma of the noise shows one
-    // end colour everywhere: surely the wrong domain.
     if (m.map.wrap == WrapMode::Clamp) {
         const NoiseGlobalStats stats = measure_global_stats(*noise, 1 << 16, 7, options.threads);
-        const double lo = stats.mean - 3 * stats.sigma, hi = stats.mean + 3 * stats.sigma;
-        if (hi < m.map.vmin || lo > m.map.vmax) {
-            std::ostringstream s;
-            s << where(scene, i, "colormap") << "the colour map's domain [" << m.map.vmin << ", " << m.map.vmax
-              << "] does not meet the driver's values (mean +- 3 sigma: [" << lo << ", " << hi << "])";
-            return bad_input(s.str());
-        }
+        if (auto st = check_domain(scene, i, m, stats.mean - 3 * stats.sigma, stats.mean + 3 * stats.sigma,
+                                   "mean +- 3 sigma");
+            !st)
+            return st;
     }
     m.noise.emplace(std::move(*noise), std::move(*table));
     return ok();
+}
+
+// A moment pyramid (bake-moments output) and the driver it was baked from,
+// read back from its cmfilter:source and checked as apply checks it.
+Status load_moments_driver(const Scene& scene, std::size_t i, const MaterialOptions& options, SurfaceMaterial& m)
+{
+    const std::string& path = scene.surfaces[i].material.driver.moments_path;
+    const std::string prefix = where(scene, i, "driver/moments");
+    auto moments = MomentTexture::open(path);
+    if (!moments) return located(moments.error(), prefix);
+    const MomentPyramidInfo& info = moments->info();
+    if (auto st = check_domain(scene, i, m, info.driver_min, info.driver_max, "min and max"); !st) return st;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(info.source, ec))
+        return io_error(prefix + "cannot read driver '" + info.source + "' recorded in '" + path +
+                        "' (cmfilter:source): no such file; the renderer reads the driver's texels beside its "
+                        "moments: re-bake the moments from the driver where it is now, or name the driver "
+                        "itself with driver/image");
+    auto source = read_moment_source(info.source, path, info, options.threads);
+    if (!source) return located(source.error(), prefix);
+    if (!is_moment_source(*source, info))
+        return bad_input(prefix + moment_source_changed(info.source, *source, path, info) + "; re-bake the moments");
+    m.driver_path = info.source;  // before the moments (and info with them) move
+    auto texture = FilteredTexture::create(std::move(*moments), std::move(source->image.values));
+    if (!texture) return located(texture.error(), prefix);
+    m.texture.emplace(std::move(*texture));
+    return ok();
+}
+
+// A driver image: read once, its moment pyramid baked in process into a
+// temporary file (TextureSystem reads files) that the texture keeps.
+Status load_image_driver(const Scene& scene, std::size_t i, const MaterialOptions& options, SurfaceMaterial& m)
+{
+    const std::string& path = scene.surfaces[i].material.driver.image_path;
+    const std::string prefix = where(scene, i, "driver/image");
+    MomentBakeOptions bake;
+    bake.driver_path = path;
+    bake.wrap = TextureWrap::Periodic;  // texture coordinates repeat (scene.h)
+    bake.threads = options.threads;
+    auto driver = read_driver_and_hash(bake.driver_read());
+    if (!driver) return located(driver.error(), prefix);
+    if (auto st = check_domain(scene, i, m, driver->image.min, driver->image.max, "min and max"); !st) return st;
+    if (options.note)
+        options.note("baking the moment pyramid of " + path + " (surface " + std::to_string(i) +
+                     "; bake it once with bake-moments --wrap periodic and name it with driver/moments to skip "
+                     "this)");
+    auto file = TemporaryFile::create("cmfilter-moments", ".exr");
+    if (!file) return located(file.error(), prefix);
+    bake.output_path = file->path();
+    auto baked = bake_moment_pyramid(bake, *driver);
+    if (!baked) return located(baked.error(), prefix);
+    auto moments = MomentTexture::open(file->path());
+    if (!moments) return located(moments.error(), prefix);
+    auto texture = FilteredTexture::create(std::move(*moments), std::move(driver->image.values),
+                                           std::make_shared<const TemporaryFile>(std::move(*file)));
+    if (!texture) return located(texture.error(), prefix);
+    m.texture.emplace(std::move(*texture));
+    m.driver_path = path;
+    m.moments_baked = true;
+    return ok();
+}
+
+Status load_driver(const Scene& scene, std::size_t i, const MaterialOptions& options, SurfaceMaterial& m)
+{
+    switch (scene.surfaces[i].material.driver.kind) {
+    case DriverKind::Noise: return load_noise_driver(scene, i, options, m);
+    case DriverKind::Moments: return load_moments_driver(scene, i, options, m);
+    case DriverKind::Image: return load_image_driver(scene, i, options, m);
+    }
+    return runtime_error(where(scene, i, "driver") + "unknown driver kind");
 }
 
 }  // namespace

@@ -5,13 +5,19 @@
 // brings C0 back from its own metadata (table_color_map.h). A noise driver
 // uses its sigma table when the scene names one (the table must have been
 // baked for the same noise) and bakes one otherwise (bake-noise's defaults;
-// seconds per noise).
+// seconds per noise). A texture driver (filtered_texture.h) is a moment
+// pyramid and its level-0 driver: a `moments` file brings the driver back
+// from its cmfilter:source, which must still be the file it was baked from
+// (SHA-256, as apply checks it); an `image` is read once and its moment
+// pyramid baked in process (bake-moments' defaults but periodic wrap: scene
+// textures repeat) into a temporary file that lives as long as the material.
 #pragma once
 
 #include "cmfilter/color_config.h"
 #include "cmfilter/color_map.h"
 #include "cmfilter/error.h"
 #include "cmfilter/filtered_noise.h"
+#include "cmfilter/filtered_texture.h"
 #include "cmfilter/gaussian_color_table.h"
 #include "cmfilter/scene.h"
 
@@ -25,21 +31,27 @@ namespace cmfilter {
 struct SurfaceMaterial {
     ColorMap map;                       // C0, scene-linear
     GaussianColorTable table;           // T(mean, sigma)
-    std::optional<FilteredNoise> noise; // the procedural driver
+    std::optional<FilteredNoise> noise;     // a procedural driver, or
+    std::optional<FilteredTexture> texture; // a texture driver: exactly one is set
     std::string map_path, table_path;   // provenance (empty table_path: baked here)
+    std::string driver_path;            // texture: the level-0 driver image read
     bool sigma_table_baked = false;     // the noise's sigma table was baked here
+    bool moments_baked = false;         // the texture's moment pyramid was baked here
 };
 
 struct MaterialOptions {
     int threads = 0;
-    // Called with a line of text before slow steps (a sigma-table bake).
+    // Called with a line of text before slow steps (a sigma-table or moment
+    // pyramid bake).
     std::function<void(const std::string&)> note;
 };
 
-// One SurfaceMaterial per scene surface, in order. BadInput names the surface
-// (/surfaces/i) and the file: unreadable tables or maps, a sigma table baked
-// for another noise, a texture driver (not supported yet), or a colour map
-// whose domain misses the driver's values entirely.
+// One SurfaceMaterial per scene surface, in order. Errors name the surface's
+// key (/surfaces/i/material/...) and the file: unreadable tables, maps,
+// moment pyramids or driver images, a sigma table baked for another noise, a
+// moments file whose recorded driver is gone (Io) or changed (BadInput), or
+// a clamp colour map whose domain misses the driver's values entirely (noise:
+// mean +- 3 sigma; texture: its min and max).
 Expected<std::vector<SurfaceMaterial>> prepare_materials(const Scene& scene, const ColorConfig& config,
                                                          const MaterialOptions& options);
 

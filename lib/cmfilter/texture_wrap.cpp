@@ -20,4 +20,15 @@ Expected<TextureWrap> parse_texture_wrap(const std::string& name)
     return bad_input("unknown wrap mode '" + name + "' (expected black, clamp or periodic)");
 }
 
+int wrap_texel(int i, int n, TextureWrap wrap)
+{
+    if (i >= 0 && i < n) return i;
+    switch (wrap) {
+    case TextureWrap::Periodic: return ((i % n) + n) % n;
+    case TextureWrap::Black: return -1;
+    case TextureWrap::Clamp: break;
+    }
+    return i < 0 ? 0 : n - 1;
+}
+
 }  // namespace cmfilter

@@ -20,4 +20,9 @@ enum class TextureWrap {
 const char* to_string(TextureWrap wrap);
 Expected<TextureWrap> parse_texture_wrap(const std::string& name);
 
+// The texel that index i stands for along an axis of n texels: i itself
+// inside [0, n); beyond, i mod n (periodic), the nearest edge texel (clamp),
+// or -1, no texel (black).
+int wrap_texel(int i, int n, TextureWrap wrap);
+
 }  // namespace cmfilter

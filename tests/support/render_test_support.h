@@ -1,7 +1,11 @@
 // Helpers for the renderer's unit tests: printing a Vec3 in doctest messages,
-// finiteness, angles, central differences, and a scene camera.
+// finiteness, angles, central differences, a scene camera, and the CIEDE2000
+// difference of two renders.
 #pragma once
 
+#include "cmfilter/ciede2000.h"
+#include "cmfilter/error_summary.h"
+#include "cmfilter/render.h"
 #include "cmfilter/scene.h"
 #include "cmfilter/vec3.h"
 
@@ -10,6 +14,7 @@
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+#include <vector>
 
 namespace doctest {
 template <>
@@ -54,6 +59,20 @@ inline cmfilter::SceneCamera make_scene_camera(const cmfilter::Vec3& position, c
     c.width = width;
     c.height = height;
     return c;
+}
+
+// CIEDE2000 between two renders of the same scene, over the pixels the first
+// one hit.
+inline cmfilter::ErrorSummary render_difference(const cmfilter::RenderedImage& a, const cmfilter::RenderedImage& b)
+{
+    std::vector<double> errors;
+    for (std::size_t p = 0; p < a.hit.size(); ++p) {
+        if (!a.hit[p]) continue;
+        const cmfilter::Rgb x{a.rgb[3 * p], a.rgb[3 * p + 1], a.rgb[3 * p + 2]};
+        const cmfilter::Rgb y{b.rgb[3 * p], b.rgb[3 * p + 1], b.rgb[3 * p + 2]};
+        errors.push_back(cmfilter::ciede2000_linear_rgb(x, y));
+    }
+    return cmfilter::summarize_errors(errors);
 }
 
 }  // namespace cmfilter_test

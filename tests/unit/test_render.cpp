@@ -3,13 +3,13 @@
 // itself), results do not depend on the thread count, misses are background,
 // and the footprint widths match their definitions, rms against a
 // Monte-Carlo variance of a linear function over the parallelogram.
-#include "cmfilter/ciede2000.h"
 #include "cmfilter/color_config.h"
 #include "cmfilter/color_map_loading.h"
-#include "cmfilter/error_summary.h"
 #include "cmfilter/footprint_width.h"
 #include "cmfilter/noise_spec.h"
 #include "cmfilter/render.h"
+
+#include "render_test_support.h"
 
 #include <doctest/doctest.h>
 
@@ -73,18 +73,6 @@ PlaneScene plane_scene(int w, int h)
     return s;
 }
 
-ErrorSummary difference(const RenderedImage& a, const RenderedImage& b)
-{
-    std::vector<double> errors;
-    for (std::size_t p = 0; p < a.hit.size(); ++p) {
-        if (!a.hit[p]) continue;
-        const Rgb x{a.rgb[3 * p], a.rgb[3 * p + 1], a.rgb[3 * p + 2]};
-        const Rgb y{b.rgb[3 * p], b.rgb[3 * p + 1], b.rgb[3 * p + 2]};
-        errors.push_back(ciede2000_linear_rgb(x, y));
-    }
-    return summarize_errors(errors);
-}
-
 }  // namespace
 
 TEST_CASE("two references with different seeds differ by at most 0.2 mean CIEDE2000")
@@ -99,7 +87,7 @@ TEST_CASE("two references with different seeds differ by at most 0.2 mean CIEDE2
     REQUIRE(a);
     REQUIRE(b);
     CHECK(a->samples == kReferenceSamples);
-    const ErrorSummary d = difference(*a, *b);
+    const ErrorSummary d = cmfilter_test::render_difference(*a, *b);
     CAPTURE(d.mean);
     CAPTURE(d.max);
     CHECK(d.mean <= 0.2);

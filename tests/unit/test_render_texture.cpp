@@ -1,0 +1,328 @@
+// Texture drivers in the renderer (filtered_texture.h, scene_materials.h,
+// render.h), on small synthetic drivers written to a scratch folder: level-0
+// lookups read the texels where they are (t grows downwards) and repeat;
+// where the footprint is tiny the moments' mean is the bilinear level-0 value
+// and sigma vanishes; a constant driver gives C0 of the constant exactly; two
+// references with different seeds agree; renders do not depend on the thread
+// count; a moments file brings its driver back from cmfilter:source, and
+// says so when the driver is gone or changed; clamp maps whose domain misses
+// the texture are refused.
+#include "cmfilter/color_config.h"
+#include "cmfilter/moment_pyramid.h"
+#include "cmfilter/render.h"
+#include "cmfilter/scene_materials.h"
+#include "cmfilter/surface_hit.h"
+
+#include "render_test_support.h"
+#include "test_images.h"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+using namespace cmfilter;
+namespace fs = std::filesystem;
+
+namespace {
+
+const double kTwoPi = 6.283185307179586;
+
+std::string scratch(const std::string& name)
+{
+    return (fs::path(cmfilter_test::temp_dir("cmfilter-test-render-texture")) / name).string();
+}
+
+// A float32 single-channel driver image at `name` in the scratch folder.
+std::string write_driver(const std::string& name, int w, int h, const std::vector<float>& values)
+{
+    const std::string path = scratch(name);
+    cmfilter_test::write_image(path, w, h, 1, OIIO::TypeDesc::FLOAT, values.data());
+    return path;
+}
+
+// A smooth driver, one period of a sine along x and of a cosine along y:
+// neighbouring texels differ by at most about 0.0035.
+std::vector<float> smooth_driver(int w, int h)
+{
+    std::vector<float> f(static_cast<std::size_t>(w) * h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            f[static_cast<std::size_t>(y) * w + x] =
+                static_cast<float>(0.5 + 0.1 * std::sin(kTwoPi * (x + 0.5) / w) + 0.1 * std::cos(kTwoPi * (y + 0.5) / h));
+    return f;
+}
+
+// A ground plane under a terrain map over [domain_min, domain_max] driven by
+// the driver image at `driver` (the renderer bakes its moments), seen from
+// `position` towards `look_at`, with the light straight above (no ambient):
+// lit pixels show the map's colour itself.
+Scene texture_scene(const std::string& driver, const Vec3& position, const Vec3& look_at, const Vec3& up,
+                    double repeat, int w, int h)
+{
+    Scene scene;
+    scene.path = "texture-scene";
+    scene.camera.position = position;
+    scene.camera.look_at = look_at;
+    scene.camera.up = up;
+    scene.camera.fov_degrees = 30;
+    scene.camera.width = w;
+    scene.camera.height = h;
+    scene.light.direction = {0, 1, 0};
+    scene.light.radiance = {1, 1, 1};
+    scene.background = {0.55, 0.65, 0.8};
+    Surface plane;
+    plane.mapping.u_axis = {1 / repeat, 0, 0};
+    plane.mapping.v_axis = {0, 0, 1 / repeat};
+    plane.material.colormap.image_path = std::string(CMFILTER_SOURCE_DIR) + "/luts/terrain.png";
+    plane.material.colormap.domain_min = 0.2;
+    plane.material.colormap.domain_max = 0.8;
+    plane.material.driver.kind = DriverKind::Image;
+    plane.material.driver.image_path = driver;
+    scene.surfaces.push_back(plane);
+    return scene;
+}
+
+std::vector<SurfaceMaterial> materials_of(const Scene& scene)
+{
+    auto config = ColorConfig::load("");
+    REQUIRE(config);
+    auto materials = prepare_materials(scene, *config, MaterialOptions{});
+    if (!materials) FAIL(materials.error().message);
+    return std::move(*materials);
+}
+
+// A moment pyramid of `driver` at `name` in the scratch folder.
+std::string bake_moments(const std::string& driver, const std::string& name)
+{
+    MomentBakeOptions options;
+    options.driver_path = driver;
+    options.output_path = scratch(name);
+    options.wrap = TextureWrap::Periodic;
+    auto baked = bake_moment_pyramid(options);
+    if (!baked) FAIL(baked.error().message);
+    return options.output_path;
+}
+
+// The error prepare_materials gives for `scene`.
+Error material_error(const Scene& scene)
+{
+    auto config = ColorConfig::load("");
+    REQUIRE(config);
+    auto materials = prepare_materials(scene, *config, MaterialOptions{});
+    REQUIRE_FALSE(materials);
+    return materials.error();
+}
+
+}  // namespace
+
+TEST_CASE("texture values at texel centres are the texels, t grows downwards, and the texture repeats")
+{
+    const int w = 16, h = 8;
+    std::vector<float> f(static_cast<std::size_t>(w) * h);
+    for (std::size_t i = 0; i < f.size(); ++i) f[i] = static_cast<float>(i) / static_cast<float>(f.size());
+    const Scene scene = texture_scene(write_driver("ramp.exr", w, h, f), {0, 1, 0}, {0, 0, 0}, {0, 0, 1}, 1, 4, 4);
+    const std::vector<SurfaceMaterial> materials = materials_of(scene);
+    REQUIRE(materials[0].texture);
+    const FilteredTexture& texture = *materials[0].texture;
+    CHECK(materials[0].moments_baked);
+    CHECK(texture.moments().info().wrap == TextureWrap::Periodic);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const double u = (x + 0.5) / w, v = (y + 0.5) / h;
+            CAPTURE(x);
+            CAPTURE(y);
+            CHECK(texture.value(u, v) == static_cast<double>(f[static_cast<std::size_t>(y) * w + x]));
+            CHECK(texture.value(u + 3, v - 2) == doctest::Approx(texture.value(u, v)).epsilon(1e-12));
+        }
+    // Halfway between two texels of a row, and across the periodic seam.
+    CHECK(texture.value(1.0 / w, 0.5 / h) == doctest::Approx(0.5 * (f[0] + f[1])));
+    CHECK(texture.value(0.0, 0.5 / h) == doctest::Approx(0.5 * (f[0] + f[w - 1])));
+    CHECK(texture.lod(4.0 / w) == doctest::Approx(2.0));
+}
+
+TEST_CASE("where the footprint is tiny the naive and gaussian mean is the bilinear level-0 value and sigma is about 0")
+{
+    // 256 x 256 texels over 20 scene units, seen from 1 unit above, straight
+    // down and obliquely: about 0.2 texel per pixel.
+    const int size = 256;
+    const std::string driver = write_driver("smooth.exr", size, size, smooth_driver(size, size));
+    for (const Vec3& look_at : {Vec3{0.3, 0, 0.2}, Vec3{0.6, 0, 0.8}}) {
+        const Scene scene = texture_scene(driver, {0.3, 1, 0.2}, look_at, {0, 0, 1}, 20, 32, 24);
+        const std::vector<SurfaceMaterial> materials = materials_of(scene);
+        const FilteredTexture& texture = *materials[0].texture;
+        auto camera = Camera::create(scene.camera);
+        REQUIRE(camera);
+        for (RenderMethod method : {RenderMethod::Naive, RenderMethod::Gaussian}) {
+            RenderOptions options;
+            options.method = method;
+            auto image = render(scene, materials, options);
+            REQUIRE(image);
+            double worst_mean = 0, worst_sigma = 0, largest_lod = -1e9;
+            for (int y = 0; y < image->height; ++y)
+                for (int x = 0; x < image->width; ++x) {
+                    const std::size_t p = static_cast<std::size_t>(y) * image->width + x;
+                    const auto hit = intersect_scene(scene, camera->ray(x + 0.5, y + 0.5));
+                    REQUIRE(hit);
+                    REQUIRE(image->hit[p]);
+                    const double expected = texture.value(hit->hit.u, hit->hit.v);
+                    worst_mean = std::max(worst_mean, std::abs(image->mean[p] - expected));
+                    worst_sigma = std::max(worst_sigma, static_cast<double>(image->sigma[p]));
+                    largest_lod = std::max(largest_lod, static_cast<double>(image->lod[p]));
+                }
+            CAPTURE(to_string(method));
+            CAPTURE(look_at);
+            CHECK(worst_mean <= 1e-3);
+            CHECK(worst_sigma <= 2e-3);
+            CHECK(largest_lod < 0);  // less than a texel per pixel
+        }
+    }
+}
+
+TEST_CASE("the supersampled colour of a constant driver is C0 of the constant exactly")
+{
+    const float constant = 0.3f;
+    const std::string driver = write_driver("constant.exr", 16, 16, std::vector<float>(256, constant));
+    const Scene scene = texture_scene(driver, {0, 1, 0}, {0, 0, 0}, {0, 0, 1}, 2, 12, 8);
+    const std::vector<SurfaceMaterial> materials = materials_of(scene);
+    // Straight above a plane facing it, with no ambient, the shade is the
+    // albedo itself: 1 * C0 + 0.
+    const Rgb c0 = materials[0].map.evaluate(constant);
+    for (RenderMethod method : {RenderMethod::Supersample, RenderMethod::Reference, RenderMethod::Naive}) {
+        for (int samples : {1, 16}) {
+            RenderOptions options;
+            options.method = method;
+            options.samples = samples;
+            options.seed = 4;
+            auto image = render(scene, materials, options);
+            REQUIRE(image);
+            CAPTURE(to_string(method));
+            CAPTURE(samples);
+            for (std::size_t p = 0; p < image->hit.size(); ++p) {
+                REQUIRE(image->hit[p]);
+                CHECK(image->rgb[3 * p] == static_cast<float>(c0.r));
+                CHECK(image->rgb[3 * p + 1] == static_cast<float>(c0.g));
+                CHECK(image->rgb[3 * p + 2] == static_cast<float>(c0.b));
+                CHECK(image->mean[p] == constant);
+                CHECK(image->sigma[p] == 0.0f);
+            }
+        }
+    }
+}
+
+TEST_CASE("two texture references with different seeds differ by at most 0.2 mean CIEDE2000")
+{
+    // The bundled driver on a ground plane to the horizon under the map of
+    // examples/scenes/plane-image-terrain.json (its mean +- 2.78 sigma), 64
+    // units a repeat: features of about a unit, as the fBm of test_render.cpp
+    // has at this size (the scene's 8 units a repeat put hundreds of features
+    // in each of these large pixels; the two references then differ by 0.4).
+    Scene scene = texture_scene(std::string(CMFILTER_SOURCE_DIR) + "/examples/noise-driver.png", {0, 1.5, 0},
+                                {0, 0.9, 10}, {0, 1, 0}, 64, 48, 27);
+    scene.surfaces[0].material.colormap.domain_min = 0.002;
+    scene.surfaces[0].material.colormap.domain_max = 0.998;
+    const std::vector<SurfaceMaterial> materials = materials_of(scene);
+    RenderOptions options;
+    options.method = RenderMethod::Reference;
+    options.seed = 1;
+    auto a = render(scene, materials, options);
+    options.seed = 2;
+    auto b = render(scene, materials, options);
+    REQUIRE(a);
+    REQUIRE(b);
+    const ErrorSummary d = cmfilter_test::render_difference(*a, *b);
+    CAPTURE(d.mean);
+    CAPTURE(d.max);
+    CHECK(d.mean <= 0.2);
+    CHECK(d.mean > 0.0);
+}
+
+TEST_CASE("texture renders do not depend on the thread count")
+{
+    const Scene scene = texture_scene(std::string(CMFILTER_SOURCE_DIR) + "/examples/noise-driver.png", {0, 1.5, 0},
+                                      {0, 0.9, 10}, {0, 1, 0}, 8, 40, 24);
+    const std::vector<SurfaceMaterial> materials = materials_of(scene);
+    for (RenderMethod method : {RenderMethod::Naive, RenderMethod::Gaussian, RenderMethod::Supersample}) {
+        RenderOptions options;
+        options.method = method;
+        options.samples = 5;
+        options.threads = 1;
+        auto one = render(scene, materials, options);
+        options.threads = 2;
+        auto two = render(scene, materials, options);
+        REQUIRE(one);
+        REQUIRE(two);
+        CAPTURE(to_string(method));
+        CHECK(one->rgb == two->rgb);
+        CHECK(one->sigma == two->sigma);
+        CHECK(one->lod == two->lod);
+    }
+}
+
+TEST_CASE("a moments driver reads its texels from cmfilter:source and refuses a driver gone or changed")
+{
+    const int size = 32;
+    const std::string driver = write_driver("source.exr", size, size, smooth_driver(size, size));
+    const std::string moments = bake_moments(driver, "source-moments.exr");
+    Scene scene = texture_scene(driver, {0, 1, 0}, {0, 0, 0}, {0, 0, 1}, 1, 8, 8);
+    scene.surfaces[0].material.driver.kind = DriverKind::Moments;
+    scene.surfaces[0].material.driver.moments_path = moments;
+
+    SUBCASE("present: the same texels as the image itself")
+    {
+        const std::vector<SurfaceMaterial> from_moments = materials_of(scene);
+        REQUIRE(from_moments[0].texture);
+        CHECK_FALSE(from_moments[0].moments_baked);
+        CHECK(from_moments[0].driver_path == driver);
+        scene.surfaces[0].material.driver.kind = DriverKind::Image;
+        const std::vector<SurfaceMaterial> from_image = materials_of(scene);
+        for (double u : {0.1, 0.37, 0.93})
+            CHECK(from_moments[0].texture->value(u, 0.4) == from_image[0].texture->value(u, 0.4));
+    }
+    SUBCASE("gone")
+    {
+        const std::string gone = write_driver("gone.exr", size, size, smooth_driver(size, size));
+        scene.surfaces[0].material.driver.moments_path = bake_moments(gone, "gone-moments.exr");
+        fs::remove(gone);
+        const Error e = material_error(scene);
+        CHECK(e.kind == ErrorKind::Io);
+        CAPTURE(e.message);
+        CHECK(e.message.rfind("texture-scene: /surfaces/0/material/driver/moments: cannot read driver '" + gone +
+                                  "' recorded in '" + scene.surfaces[0].material.driver.moments_path + "'",
+                              0) == 0);
+    }
+    SUBCASE("changed")
+    {
+        const std::string changed = write_driver("changed.exr", size, size, smooth_driver(size, size));
+        scene.surfaces[0].material.driver.moments_path = bake_moments(changed, "changed-moments.exr");
+        write_driver("changed.exr", size, size, std::vector<float>(size * size, 0.5f));
+        const Error e = material_error(scene);
+        CHECK(e.kind == ErrorKind::BadInput);
+        CAPTURE(e.message);
+        CHECK(e.message.find("/surfaces/0/material/driver/moments: driver '" + changed + "' (sha256 ") !=
+              std::string::npos);
+        CHECK(e.message.find("re-bake the moments") != std::string::npos);
+    }
+}
+
+TEST_CASE("a clamp colour map whose domain misses the texture's values is refused")
+{
+    const int size = 16;
+    const std::string driver = write_driver("domain.exr", size, size, smooth_driver(size, size));
+    Scene scene = texture_scene(driver, {0, 1, 0}, {0, 0, 0}, {0, 0, 1}, 1, 4, 4);
+    scene.surfaces[0].material.colormap.domain_min = 5;
+    scene.surfaces[0].material.colormap.domain_max = 6;
+    const Error image = material_error(scene);
+    CHECK(image.kind == ErrorKind::BadInput);
+    CAPTURE(image.message);
+    CHECK(image.message.find("/surfaces/0/material/colormap: the colour map's domain [5, 6] does not meet the "
+                             "driver's values (min and max: [0.") != std::string::npos);
+    scene.surfaces[0].material.driver.kind = DriverKind::Moments;
+    scene.surfaces[0].material.driver.moments_path = bake_moments(driver, "domain-moments.exr");
+    CHECK(material_error(scene).message == image.message);
+    // A repeating map meets every value.
+    scene.surfaces[0].material.colormap.wrap = WrapMode::Repeat;
+    CHECK(materials_of(scene).size() == 1);
+}
