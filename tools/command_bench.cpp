@@ -24,6 +24,7 @@ struct BenchArgs {
     std::string resolution;
     int reference_samples = kReferenceSamples;
     int repeats = 3;
+    int probes = 16;
     std::uint64_t seed = 0;
     std::string ocio_config;
     int threads = 0;
@@ -62,6 +63,9 @@ Status run(const BenchArgs& args)
     BenchOptions options;
     options.reference_samples = args.reference_samples;
     options.repeats = args.repeats;
+    options.max_probes = args.probes;
+    if (args.probes < 1 || args.probes > 64)
+        return bad_input("--probes " + std::to_string(args.probes) + " is out of range (expected 1 to 64)");
     options.seed = args.seed;
     options.threads = args.threads;
     if (!args.quiet) options.note = [](const std::string& line) { std::cerr << "bench: " << line << "\n"; };
@@ -107,6 +111,8 @@ Command setup_bench(CLI::App& parent)
     app->add_option("--reference-spp", args->reference_samples, "Rays per pixel of the reference (>= 1024)")
         ->capture_default_str();
     app->add_option("--repeats", args->repeats, "Timed runs per configuration (the fastest counts)")
+        ->capture_default_str();
+    app->add_option("--probes", args->probes, "Noise drivers: probes along an anisotropic footprint (naive, gaussian)")
         ->capture_default_str();
     app->add_option("--seed", args->seed, "Seed of the sub-pixel samples")->capture_default_str();
     app->add_option("--ocio-config", args->ocio_config,

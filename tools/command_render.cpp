@@ -24,6 +24,7 @@ struct RenderArgs {
     std::string output;
     std::string method = "gaussian";
     int samples = 16;
+    int probes = 16;
     std::uint64_t seed = 0;
     std::string footprint = "rms";
     std::string aov;
@@ -73,6 +74,9 @@ Status run(const RenderArgs& args)
     options.seed = args.seed;
     options.threads = args.threads;
     options.footprint = *footprint;
+    if (args.probes < 1 || args.probes > 64)
+        return bad_input("--probes " + std::to_string(args.probes) + " is out of range (expected 1 to 64)");
+    options.max_probes = args.probes;
     if (talk && isatty(STDERR_FILENO)) options.progress = terminal_progress("render");
     auto image = render(*scene, *materials, options);
     if (!image) return image.error();
@@ -131,6 +135,9 @@ Command setup_render(CLI::App& parent)
         ->capture_default_str();
     app->add_option("--seed", args->seed, "Seed of the sub-pixel samples")->capture_default_str();
     app->add_option("--footprint", args->footprint, "Width of an anisotropic footprint: rms, area, major or minor")
+        ->capture_default_str();
+    app->add_option("--probes", args->probes,
+                    "Noise drivers: filter an anisotropic footprint as up to N probes along its major edge")
         ->capture_default_str();
     app->add_option("--aov", args->aov, "Also write PREFIX.mean.exr, PREFIX.sigma.exr and PREFIX.lod.exr");
     app->add_option("--ocio-config", args->ocio_config,

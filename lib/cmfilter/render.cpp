@@ -1,5 +1,6 @@
 #include "cmfilter/render.h"
 
+#include "cmfilter/anisotropic_probes.h"
 #include "cmfilter/camera.h"
 #include "cmfilter/noise_lattice.h"
 #include "cmfilter/parallel_for.h"
@@ -144,16 +145,38 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
             if (hit) {
                 const SurfaceHit& h = hit->hit;
                 const SurfaceMaterial& m = materials[static_cast<std::size_t>(hit->surface)];
-                const FilteredDriver f = filter_driver(m, h, options.footprint);
                 image.hit[p] = 1;
                 image.distance[p] = static_cast<float>(h.t);
-                image.mean[p] = static_cast<float>(f.mean);
-                image.sigma[p] = static_cast<float>(f.sigma);
-                image.lod[p] = static_cast<float>(f.lod);
-                if (options.method == RenderMethod::Naive)
-                    colour = shade(m.map.evaluate(f.mean), h.normal, scene.light);
-                else if (options.method == RenderMethod::Gaussian)
-                    colour = shade(m.table.lookup(f.mean, f.sigma), h.normal, scene.light);
+                if (m.noise && options.max_probes > 1) {
+                    // A noise over an anisotropic footprint: probes along its
+                    // major edge (anisotropic_probes.h), colours averaged.
+                    const FootprintProbes probes = footprint_probes(h.du_dx, h.dv_dx, h.du_dy, h.dv_dy,
+                                                                    options.max_probes, options.footprint);
+                    Rgb albedo;
+                    double mean = 0, sigma = 0;
+                    for (int j = 0; j < probes.count; ++j) {
+                        const double o = (j + 0.5) / probes.count - 0.5;
+                        const FilteredNoise::Parameters f =
+                            m.noise->filter(h.u + o * probes.step_u, h.v + o * probes.step_v, probes.width);
+                        albedo += options.method == RenderMethod::Naive ? m.map.evaluate(f.mean)
+                                                                        : m.table.lookup(f.mean, f.sigma);
+                        mean += f.mean;
+                        sigma += f.sigma;
+                    }
+                    image.mean[p] = static_cast<float>(mean / probes.count);
+                    image.sigma[p] = static_cast<float>(sigma / probes.count);
+                    image.lod[p] = static_cast<float>(m.noise->lod(probes.width));
+                    if (!supersampled) colour = shade((1.0 / probes.count) * albedo, h.normal, scene.light);
+                } else {
+                    const FilteredDriver f = filter_driver(m, h, options.footprint);
+                    image.mean[p] = static_cast<float>(f.mean);
+                    image.sigma[p] = static_cast<float>(f.sigma);
+                    image.lod[p] = static_cast<float>(f.lod);
+                    if (options.method == RenderMethod::Naive)
+                        colour = shade(m.map.evaluate(f.mean), h.normal, scene.light);
+                    else if (options.method == RenderMethod::Gaussian)
+                        colour = shade(m.table.lookup(f.mean, f.sigma), h.normal, scene.light);
+                }
             }
             if (supersampled) {
                 sample_positions(image.samples, options.seed, p, xs, ys);

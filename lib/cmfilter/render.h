@@ -46,6 +46,11 @@ struct RenderOptions {
     std::uint64_t seed = 0;
     int threads = 0;   // 0: all cores
     FootprintWidth footprint = FootprintWidth::Rms;
+    // Noise drivers: filter an anisotropic footprint as up to this many probes
+    // along its major edge (anisotropic_probes.h); 1: one footprint. 16
+    // by default: on the bundled ground planes the error stops falling there
+    // (docs/render.md).
+    int max_probes = 16;
     std::function<void(double)> progress;  // fraction of rows done, may be empty
 };
 

@@ -5,6 +5,7 @@
 // Monte-Carlo variance of a linear function over the parallelogram.
 #include "cmfilter/color_config.h"
 #include "cmfilter/color_map_loading.h"
+#include "cmfilter/anisotropic_probes.h"
 #include "cmfilter/footprint_width.h"
 #include "cmfilter/noise_spec.h"
 #include "cmfilter/render.h"
@@ -181,4 +182,31 @@ TEST_CASE("footprint widths: rms gives the square with the same variance of a li
     auto bad = parse_footprint_width("wide");
     REQUIRE_FALSE(bad);
     CHECK(bad.error().message.find("'wide' is unknown") != std::string::npos);
+}
+
+TEST_CASE("anisotropic probes cut the footprint along its major edge into near-square pieces")
+{
+    // A square footprint: one probe, the footprint's own width.
+    FootprintProbes square = footprint_probes(1, 0, 0, 1, 16, FootprintWidth::Rms);
+    CHECK(square.count == 1);
+    CHECK(square.width == doctest::Approx(footprint_width(FootprintWidth::Rms, 1, 0, 0, 1)));
+    // 10 x 1, major edge the second: ceil(10) = 10 probes along it, each piece 1 x 1.
+    FootprintProbes thin = footprint_probes(0, 1, 10, 0, 16, FootprintWidth::Rms);
+    CHECK(thin.count == 10);
+    CHECK(thin.step_u == 10.0);
+    CHECK(thin.step_v == 0.0);
+    CHECK(thin.width == doctest::Approx(1.0));
+    // Capped: 100 x 1 with at most 16 probes, pieces 6.25 x 1.
+    FootprintProbes capped = footprint_probes(100, 0, 0, 1, 16, FootprintWidth::Major);
+    CHECK(capped.count == 16);
+    CHECK(capped.width == doctest::Approx(6.25));
+    // The probes' centres tile the major edge: offsets (j + 1/2) / n - 1/2 are
+    // symmetric about the centre and n pieces of length major / n cover it.
+    double sum = 0;
+    for (int j = 0; j < capped.count; ++j) sum += (j + 0.5) / capped.count - 0.5;
+    CHECK(std::fabs(sum) < 1e-12);
+    // A degenerate footprint (a segment) takes every probe allowed.
+    CHECK(footprint_probes(4, 0, 0, 0, 8, FootprintWidth::Rms).count == 8);
+    // max_probes 1: the single footprint.
+    CHECK(footprint_probes(100, 0, 0, 1, 1, FootprintWidth::Rms).count == 1);
 }
