@@ -11,8 +11,8 @@ mkdir -p "$2"
 work=$(cd "$2" && pwd)
 threads=${3:-0}
 root=$(cd "$(dirname "$0")/../.." && pwd)
-"$build/tools/cmfilter" bench "$root"/examples/scenes/*.json --csv "$work/render-bench.csv" --charts "$work" \
-    --threads "$threads"
+(cd "$root" && "$build/tools/cmfilter" bench examples/scenes/*.json --csv "$work/render-bench.csv" \
+    --charts "$work" --threads "$threads")
 cp "$work/render-bench.csv" "$root/docs/data/render-bench.csv"
 for png in "$work"/*.png; do
   cp "$png" "$root/docs/images/render-bench-$(basename "$png")"
