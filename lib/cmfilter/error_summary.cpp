@@ -4,6 +4,7 @@
 #include "cmfilter/error_summary.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace cmfilter {
 
@@ -25,6 +26,17 @@ ErrorSummary summarize_errors(std::vector<double> values)
     s.p95 = values[rank - 1];
     s.max = values.back();
     return s;
+}
+
+double nearest_rank_quantile(std::vector<double> values, double q)
+{
+    if (values.empty()) return 0.0;
+    const std::size_t n = values.size();
+    const double exact_rank = q * static_cast<double>(n) * (1.0 - 1e-12);
+    const std::size_t rank = std::clamp<std::size_t>(static_cast<std::size_t>(std::ceil(exact_rank)), 1, n);
+    auto kth = values.begin() + static_cast<std::ptrdiff_t>(rank - 1);
+    std::nth_element(values.begin(), kth, values.end());
+    return *kth;
 }
 
 }  // namespace cmfilter

@@ -21,4 +21,11 @@ struct ErrorSummary {
 // Takes the values by value because it sorts them.
 ErrorSummary summarize_errors(std::vector<double> values);
 
+// The nearest-rank q-quantile, 0 < q <= 1: the value at rank ceil(q n) of the
+// sorted sample (q = 0.95 is ErrorSummary::p95, q = 1 the maximum); 0 for an
+// empty sample. The rank is computed with a relative slack of 1e-12 so that a
+// q n meant to be an integer (0.999 x 20000) is not rounded up by its binary
+// representation. Takes the values by value because it partially sorts them.
+double nearest_rank_quantile(std::vector<double> values, double q);
+
 }  // namespace cmfilter

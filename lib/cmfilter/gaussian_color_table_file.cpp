@@ -62,6 +62,14 @@ Status write_gaussian_color_table(const std::string& path, const GaussianColorTa
         dbl("cmfilter:lookup_de2000_p95", info.lookup_error->p95);
         dbl("cmfilter:lookup_de2000_max", info.lookup_error->max);
     }
+    if (!info.sigma_max_source.empty()) spec.attribute("cmfilter:sigma_max_source", info.sigma_max_source);
+    if (info.tolerance) {
+        dbl("cmfilter:tolerance_de2000", info.tolerance->tolerance);
+        spec.attribute("cmfilter:tolerance_statistic", info.tolerance->statistic);
+        dbl("cmfilter:tolerance_error", info.tolerance->error);
+        spec.attribute("cmfilter:tolerance_samples", info.tolerance->samples);
+        spec.attribute("cmfilter:tolerance_search", info.tolerance->search);
+    }
 
     return write_float_artefact(*out, spec, table.data().data());
 }
@@ -117,6 +125,16 @@ Expected<LoadedGaussianColorTable> read_gaussian_color_table(const std::string& 
         e.p95 = dbl("cmfilter:lookup_de2000_p95");
         e.max = dbl("cmfilter:lookup_de2000_max");
         info.lookup_error = e;
+    }
+    info.sigma_max_source = spec.get_string_attribute("cmfilter:sigma_max_source");
+    if (spec.find_attribute("cmfilter:tolerance_de2000")) {
+        TableToleranceRecord t;
+        t.tolerance = dbl("cmfilter:tolerance_de2000");
+        t.statistic = spec.get_string_attribute("cmfilter:tolerance_statistic");
+        t.error = dbl("cmfilter:tolerance_error");
+        t.samples = spec.get_int_attribute("cmfilter:tolerance_samples", 0);
+        t.search = spec.get_string_attribute("cmfilter:tolerance_search");
+        info.tolerance = t;
     }
     return out;
 }

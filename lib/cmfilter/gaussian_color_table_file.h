@@ -16,11 +16,23 @@ namespace cmfilter {
 
 inline constexpr const char* kGaussianColorTableKind = "gaussian-color-table";
 
+// How a table's size was chosen for a tolerance (bake-colormap --tolerance,
+// table_size_search.h).
+struct TableToleranceRecord {
+    double tolerance = 0;   // CIEDE2000
+    std::string statistic;  // quantile_name: "p99.9", "max"
+    double error = 0;       // the statistic the table reaches at the verification points
+    int samples = 0;        // verification points
+    std::string search;     // the grid searched and what was measured
+};
+
 // What a table file says about itself beyond its axes.
 struct GaussianColorTableInfo {
     ColorMapProvenance source;
     std::optional<ErrorSummary> lookup_error;  // CIEDE2000 of bilinear lookups vs exact
     int lookup_error_samples = 0;
+    std::string sigma_max_source;              // why this sigma_max (empty: not recorded)
+    std::optional<TableToleranceRecord> tolerance;  // set when the size was searched for
     std::string baked_by;                      // cmfilter version
 };
 
