@@ -94,7 +94,7 @@ TEST_CASE("ciede2000: linear Rec.709 to L*a*b* at white, black and mid grey")
     CHECK(std::fabs(grey.b) <= 1e-9);
 }
 
-TEST_CASE("ciede2000: linear Rec.709 input is clipped to [0, 1], NaN to 0")
+TEST_CASE("ciede2000: linear Rec.709 input is clipped to 0..1, NaN to 0")
 {
     // Exact comparisons: clipping makes the inputs bit-identical, so the
     // outputs are bit-identical too.

@@ -36,7 +36,7 @@ TEST_CASE("an 8-bit PNG is decoded as sRGB and laid over the domain")
     CHECK(loaded->provenance.sha256.size() == 64);
 }
 
-TEST_CASE("a float EXR is linear by default; --colorspace overrides the file")
+TEST_CASE("a float EXR is linear by default, and --colorspace overrides the file")
 {
     const std::string path = temp_dir() + "/lin.exr";
     const float px[] = {0.5f, 0.25f, 2.0f, 1.0f, 0.0f, 0.125f};
@@ -56,7 +56,7 @@ TEST_CASE("a float EXR is linear by default; --colorspace overrides the file")
     CHECK(acescg->provenance.colorspace_rule == "--colorspace");
 }
 
-TEST_CASE("rows and columns of a larger image; grey replicated")
+TEST_CASE("rows and columns of a larger image, grey replicated")
 {
     const std::string path = temp_dir() + "/grid.exr";
     std::vector<float> px(4 * 3);

@@ -201,7 +201,7 @@ TEST_CASE("moment pyramid matches maketx --filter box on a power-of-two driver")
     }
 }
 
-TEST_CASE("offset driver [1000, 1000.01]: sigma survives where naive float moments cancel")
+TEST_CASE("offset driver 1000..1000.01: sigma survives where naive float moments cancel")
 {
     const int W = 48, H = 40;
     const auto f = random_driver(W, H, 1000.0, 1000.01, 5);
