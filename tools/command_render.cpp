@@ -64,6 +64,7 @@ Status run(const RenderArgs& args)
     const bool talk = !args.quiet && !args.json;
     MaterialOptions material_options;
     material_options.threads = args.threads;
+    material_options.histograms = *method == RenderMethod::Exact;
     if (talk) material_options.note = [](const std::string& line) { std::cerr << "render: " << line << "\n"; };
     auto materials = prepare_materials(*scene, *config, material_options);
     if (!materials) return materials.error();
@@ -130,7 +131,7 @@ Command setup_render(CLI::App& parent)
     CLI::App* app = parent.add_subcommand("render", "Render a scene with colour-mapped surfaces, filtered per pixel");
     app->add_option("scene", args->scene, "Scene file (JSON, docs/scene-format.md)")->required();
     app->add_option("-o,--output", args->output, "Image to write (.exr scene-linear, .png/.jpg sRGB)")->required();
-    app->add_option("--method", args->method, "naive, gaussian, supersample or reference")->capture_default_str();
+    app->add_option("--method", args->method, "naive, gaussian, exact (texture drivers with at most 256 values), supersample or reference")->capture_default_str();
     app->add_option("--spp", args->samples, "Rays per pixel for supersample (reference: at least 1024)")
         ->capture_default_str();
     app->add_option("--seed", args->seed, "Seed of the sub-pixel samples")->capture_default_str();

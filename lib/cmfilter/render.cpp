@@ -20,6 +20,7 @@ const char* to_string(RenderMethod method)
     switch (method) {
     case RenderMethod::Naive: return "naive";
     case RenderMethod::Gaussian: return "gaussian";
+    case RenderMethod::Exact: return "exact";
     case RenderMethod::Supersample: return "supersample";
     case RenderMethod::Reference: return "reference";
     }
@@ -28,9 +29,10 @@ const char* to_string(RenderMethod method)
 
 Expected<RenderMethod> parse_render_method(const std::string& text)
 {
-    for (RenderMethod m : {RenderMethod::Naive, RenderMethod::Gaussian, RenderMethod::Supersample, RenderMethod::Reference})
+    for (RenderMethod m : {RenderMethod::Naive, RenderMethod::Gaussian, RenderMethod::Exact, RenderMethod::Supersample,
+                           RenderMethod::Reference})
         if (text == to_string(m)) return m;
-    return bad_input("method '" + text + "' is unknown (expected naive, gaussian, supersample or reference)");
+    return bad_input("method '" + text + "' is unknown (expected naive, gaussian, exact, supersample or reference)");
 }
 
 namespace {
@@ -92,6 +94,21 @@ FilteredDriver filter_driver(const SurfaceMaterial& m, const SurfaceHit& h, Foot
     return {f.mean, f.sigma, m.noise->lod(w)};
 }
 
+// The exact method's albedo, sum_b h_b C0(v_b) (sec. 4.1): the histogram of
+// the texture over an isotropic footprint at the LOD of its width (in
+// level-0 texels; below 0, level 0), `colors` holding C0(v_b).
+Rgb exact_albedo(const SurfaceMaterial& m, const SurfaceHit& h, double lod, const std::vector<Rgb>& colors,
+                  std::vector<float>& weights)
+{
+    weights.resize(colors.size());
+    const float level = std::isfinite(lod) ? static_cast<float>(std::max(0.0, lod)) : 0.0f;
+    // A failed lookup leaves zero weights (black), as apply's exact method.
+    m.histograms->lookup(static_cast<float>(h.u), static_cast<float>(h.v), level, weights.data());
+    Rgb albedo;
+    for (std::size_t b = 0; b < colors.size(); ++b) albedo += static_cast<double>(weights[b]) * colors[b];
+    return albedo;
+}
+
 // The driver at a point, for the supersampled methods.
 double driver_value(const SurfaceMaterial& m, double u, double v)
 {
@@ -111,6 +128,20 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
                          std::to_string(kMaxSamples) + ")");
     for (const SurfaceMaterial& m : materials)
         if (!m.noise && !m.texture) return bad_input("render: every surface needs a driver (a noise or a texture)");
+    // The exact method: C0 at each material's distinct driver values.
+    std::vector<std::vector<Rgb>> bin_colors(materials.size());
+    if (options.method == RenderMethod::Exact)
+        for (std::size_t i = 0; i < materials.size(); ++i) {
+            const SurfaceMaterial& m = materials[i];
+            if (!m.texture)
+                return bad_input("render: surface " + std::to_string(i) + ": exact needs a texture driver with at most " +
+                                 std::to_string(kHistogramMaxValues) +
+                                 " distinct values; noise drivers have no exact filtering distribution");
+            if (!m.histograms)
+                return bad_input("render: surface " + std::to_string(i) +
+                                 ": exact needs the texture's histogram pyramid (MaterialOptions::histograms)");
+            for (double v : m.histograms->info().values) bin_colors[i].push_back(m.map.evaluate(v));
+        }
     auto camera = Camera::create(scene.camera);
     if (!camera) return camera.error();
 
@@ -135,6 +166,7 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
     const Stopwatch clock;
     parallel_for(image.height, options.threads, [&](int y) {
         std::vector<double> xs, ys;
+        std::vector<float> weights;
         for (int x = 0; x < image.width; ++x) {
             const std::size_t p = static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) +
                                   static_cast<std::size_t>(x);
@@ -176,6 +208,10 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
                         colour = shade(m.map.evaluate(f.mean), h.normal, scene.light);
                     else if (options.method == RenderMethod::Gaussian)
                         colour = shade(m.table.lookup(f.mean, f.sigma), h.normal, scene.light);
+                    else if (options.method == RenderMethod::Exact)
+                        colour = shade(exact_albedo(m, h, f.lod, bin_colors[static_cast<std::size_t>(hit->surface)],
+                                                    weights),
+                                       h.normal, scene.light);
                 }
             }
             if (supersampled) {

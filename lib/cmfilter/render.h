@@ -6,6 +6,14 @@
 //   gaussian     the same ray; T(mean, sigma) (eq. 10), sigma from the
 //                noise's table at the footprint's LOD, or from a texture's
 //                moment pyramid (sec. 4.2);
+//   exact        the same ray; sum_b h_b C0(v_b) (sec. 4.1) for a texture
+//                driver with at most 256 distinct values v_b, the weights h_b
+//                from its histogram pyramid (histogram_pyramid.h) at (u, v),
+//                isotropic at the LOD of the footprint width (log2 of the
+//                width in level-0 texels, clamped to the pyramid's levels):
+//                exact for a box footprint one texel-aligned level wide, not
+//                for an anisotropic one; materials need their histograms
+//                (MaterialOptions::histograms), and noise drivers are refused;
 //   supersample  N rays per pixel (a jittered N = n x n grid when N is a
 //                square, else N rooks: one sample per row and column of an
 //                N x N grid, columns shuffled), each point-evaluating C0(f(x))
@@ -33,7 +41,7 @@
 
 namespace cmfilter {
 
-enum class RenderMethod { Naive, Gaussian, Supersample, Reference };
+enum class RenderMethod { Naive, Gaussian, Exact, Supersample, Reference };
 const char* to_string(RenderMethod method);
 Expected<RenderMethod> parse_render_method(const std::string& text);
 
@@ -68,7 +76,8 @@ struct RenderedImage {
 };
 
 // BadInput for a sample count outside 1 .. kMaxSamples, a material count
-// that does not match the scene, or a material without a driver.
+// that does not match the scene, a material without a driver, or, for the
+// exact method, a noise driver or a texture without its histogram pyramid.
 Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMaterial>& materials,
                                const RenderOptions& options);
 

@@ -177,6 +177,35 @@ Status load_image_driver(const Scene& scene, std::size_t i, const MaterialOption
     return ok();
 }
 
+// The histogram pyramid of a texture driver (render --method exact): baked
+// from the level-0 driver the texture was made from, with its wrap and
+// channel, into a temporary file that the material keeps.
+Status load_histograms(const Scene& scene, std::size_t i, const MaterialOptions& options, SurfaceMaterial& m)
+{
+    const DriverSource& driver = scene.surfaces[i].material.driver;
+    const std::string prefix =
+        where(scene, i, driver.kind == DriverKind::Moments ? "driver/moments" : "driver/image");
+    const MomentPyramidInfo& moments = m.texture->moments().info();
+    HistogramBakeOptions bake;
+    bake.driver_path = m.driver_path;
+    if (driver.kind == DriverKind::Moments) bake.channel = moments.channel;
+    bake.wrap = moments.wrap;
+    bake.threads = options.threads;
+    if (options.note)
+        options.note("baking the histogram pyramid of " + m.driver_path + " (surface " + std::to_string(i) +
+                     "; --method exact)");
+    auto file = TemporaryFile::create("cmfilter-histograms", ".exr");
+    if (!file) return located(file.error(), prefix);
+    bake.output_path = file->path();
+    auto baked = bake_histogram_pyramid(bake);
+    if (!baked) return located(baked.error(), prefix);
+    auto histograms = HistogramTexture::open(file->path());
+    if (!histograms) return located(histograms.error(), prefix);
+    m.histograms_file = std::make_shared<const TemporaryFile>(std::move(*file));
+    m.histograms.emplace(std::move(*histograms));
+    return ok();
+}
+
 Status load_driver(const Scene& scene, std::size_t i, const MaterialOptions& options, SurfaceMaterial& m)
 {
     switch (scene.surfaces[i].material.driver.kind) {
@@ -195,7 +224,13 @@ Expected<std::vector<SurfaceMaterial>> prepare_materials(const Scene& scene, con
     std::vector<SurfaceMaterial> materials(scene.surfaces.size());
     for (std::size_t i = 0; i < scene.surfaces.size(); ++i) {
         if (auto st = load_colormap(scene, i, config, options, materials[i]); !st) return st.error();
+        if (options.histograms && scene.surfaces[i].material.driver.kind == DriverKind::Noise)
+            return bad_input(where(scene, i, "driver") +
+                             "exact needs a texture driver with at most " + std::to_string(kHistogramMaxValues) +
+                             " distinct values; noise drivers have no exact filtering distribution");
         if (auto st = load_driver(scene, i, options, materials[i]); !st) return st.error();
+        if (options.histograms)
+            if (auto st = load_histograms(scene, i, options, materials[i]); !st) return st.error();
     }
     return materials;
 }

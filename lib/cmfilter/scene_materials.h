@@ -11,6 +11,12 @@
 // (SHA-256, as apply checks it); an `image` is read once and its moment
 // pyramid baked in process (bake-moments' defaults but periodic wrap: scene
 // textures repeat) into a temporary file that lives as long as the material.
+// For `render --method exact` (MaterialOptions::histograms) a texture driver
+// also gets its histogram pyramid (histogram_pyramid.h), baked in process
+// from the same level-0 driver with the same wrap into a temporary file of
+// its own; a noise driver is refused (it has no exact filtering
+// distribution), and so is a driver with more than kHistogramMaxValues
+// distinct values (the histogram bake's own error).
 #pragma once
 
 #include "cmfilter/color_config.h"
@@ -19,9 +25,11 @@
 #include "cmfilter/filtered_noise.h"
 #include "cmfilter/filtered_texture.h"
 #include "cmfilter/gaussian_color_table.h"
+#include "cmfilter/histogram_pyramid.h"
 #include "cmfilter/scene.h"
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -37,6 +45,11 @@ struct SurfaceMaterial {
     std::string driver_path;            // texture: the level-0 driver image read
     bool sigma_table_baked = false;     // the noise's sigma table was baked here
     bool moments_baked = false;         // the texture's moment pyramid was baked here
+    // Texture drivers with MaterialOptions::histograms: the histogram pyramid
+    // of the level-0 driver and its temporary file (declared first: removed
+    // after the TextureSystem closes it).
+    std::shared_ptr<const TemporaryFile> histograms_file;
+    std::optional<HistogramTexture> histograms;
 };
 
 struct MaterialOptions {
@@ -44,6 +57,9 @@ struct MaterialOptions {
     // Called with a line of text before slow steps (a sigma-table or moment
     // pyramid bake).
     std::function<void(const std::string&)> note;
+    // Bake each texture driver's histogram pyramid (render --method exact);
+    // BadInput for a noise driver or a driver with too many distinct values.
+    bool histograms = false;
 };
 
 // One SurfaceMaterial per scene surface, in order. Errors name the surface's

@@ -77,6 +77,13 @@ int main(int argc, char** argv)
     std::vector<unsigned char> driver(37 * 23);
     for (std::size_t i = 0; i < driver.size(); ++i) driver[i] = static_cast<unsigned char>((i * 53) % 256);
     ok &= write(dir + "/driver-37x23.png", 37, 23, 1, OIIO::TypeDesc::UINT8, driver.data());
+    // Four distinct values in blocks of 8 x 8 texels (render --method exact).
+    std::vector<unsigned char> quantised(64 * 64);
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x)
+            quantised[static_cast<std::size_t>(y * 64 + x)] =
+                static_cast<unsigned char>(40 + 60 * ((((x / 8) * 7 + (y / 8) * 5) ^ (x / 16)) % 4));
+    ok &= write(dir + "/driver-4values.png", 64, 64, 1, OIIO::TypeDesc::UINT8, quantised.data());
     std::vector<float> nan_driver = {0.1f, 0.2f, NAN, 0.4f, 0.5f, INFINITY, 0.7f, 0.8f, 0.9f, NAN, 1.1f, 1.2f};
     ok &= write(dir + "/driver-nan.exr", 4, 3, 1, OIIO::TypeDesc::FLOAT, nan_driver.data());
     std::vector<float> apply_driver(32 * 32);

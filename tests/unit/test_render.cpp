@@ -210,3 +210,30 @@ TEST_CASE("anisotropic probes cut the footprint along its major edge into near-s
     // max_probes 1: the single footprint.
     CHECK(footprint_probes(100, 0, 0, 1, 1, FootprintWidth::Rms).count == 1);
 }
+
+TEST_CASE("exact refuses a noise driver, in render and in prepare_materials, naming the surface")
+{
+    PlaneScene s = plane_scene(8, 6);
+    RenderOptions options;
+    options.method = RenderMethod::Exact;
+    auto image = render(s.scene, s.materials, options);
+    REQUIRE_FALSE(image);
+    CHECK(image.error().kind == ErrorKind::BadInput);
+    CHECK(image.error().message.find("noise drivers have no exact filtering distribution") != std::string::npos);
+
+    s.scene.surfaces[0].material.colormap.image_path = std::string(CMFILTER_SOURCE_DIR) + "/luts/terrain.png";
+    s.scene.surfaces[0].material.colormap.domain_min = -0.68;
+    s.scene.surfaces[0].material.colormap.domain_max = 0.68;
+    s.scene.surfaces[0].material.driver.kind = DriverKind::Noise;
+    s.scene.surfaces[0].material.driver.noise_spec = "fbm:base=gradient,octaves=6";
+    auto config = ColorConfig::load("");
+    REQUIRE(config);
+    MaterialOptions material_options;
+    material_options.histograms = true;
+    auto materials = prepare_materials(s.scene, *config, material_options);
+    REQUIRE_FALSE(materials);
+    CHECK(materials.error().kind == ErrorKind::BadInput);
+    CHECK(materials.error().message ==
+          "test-scene: /surfaces/0/material/driver: exact needs a texture driver with at most 256 distinct values; "
+          "noise drivers have no exact filtering distribution");
+}

@@ -6,7 +6,10 @@
 // references with different seeds agree; renders do not depend on the thread
 // count; a moments file brings its driver back from cmfilter:source, and
 // says so when the driver is gone or changed; clamp maps whose domain misses
-// the texture are refused.
+// the texture are refused; the exact method on a driver with four values is
+// the box mean of C0 over the texels and near the reference, and refuses a
+// render without histograms and a driver with too many values.
+#include "cmfilter/camera.h"
 #include "cmfilter/color_config.h"
 #include "cmfilter/moment_pyramid.h"
 #include "cmfilter/render.h"
@@ -18,6 +21,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -325,4 +329,120 @@ TEST_CASE("a clamp colour map whose domain misses the texture's values is refuse
     // A repeating map meets every value.
     scene.surfaces[0].material.colormap.wrap = WrapMode::Repeat;
     CHECK(materials_of(scene).size() == 1);
+}
+
+namespace {
+
+// A driver with four distinct values in blocks of 4 x 4 texels, the blocks'
+// values from a fixed hash: texel-scale detail that the pixels of a plane
+// seen obliquely average over many blocks.
+std::vector<float> quantised_driver(int w, int h)
+{
+    const float levels[4] = {0.3f, 0.45f, 0.6f, 0.75f};
+    std::vector<float> f(static_cast<std::size_t>(w) * h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const unsigned bx = static_cast<unsigned>(x / 16), by = static_cast<unsigned>(y / 16);
+            const unsigned k = (bx * 73856093u) ^ (by * 19349663u);
+            f[static_cast<std::size_t>(y) * w + x] = levels[(k >> 3) % 4];
+        }
+    return f;
+}
+
+std::vector<SurfaceMaterial> exact_materials_of(const Scene& scene)
+{
+    auto config = ColorConfig::load("");
+    REQUIRE(config);
+    MaterialOptions options;
+    options.histograms = true;
+    auto materials = prepare_materials(scene, *config, options);
+    if (!materials) FAIL(materials.error().message);
+    return std::move(*materials);
+}
+
+}  // namespace
+
+TEST_CASE("exact on a driver with four values matches the reference within 0.5 mean CIEDE2000")
+{
+    // 512 x 512 texels a repeat seen straight down, 2 repeats over 32 x 32
+    // pixels: each pixel is a box of 32 x 32 texels aligned with level 5 of
+    // the pyramid, over 4 blocks of 16 x 16 texels. The reference's f is
+    // bilinear in level 0, so half a texel each side of a block edge takes
+    // values between the four (1/16 of the area); the histograms see
+    // piecewise-constant texels: that is the 0.42 left.
+    const int n = 512;
+    const std::vector<float> f = quantised_driver(n, n);
+    const double d = 1 / std::tan(kTwoPi / 24);  // fov 30 degrees: 2 units across
+    const Scene scene = texture_scene(write_driver("quantised.exr", n, n, f), {0, d, 0}, {0, 0, 0}, {0, 0, 1}, 1, 32, 32);
+    const std::vector<SurfaceMaterial> materials = exact_materials_of(scene);
+    REQUIRE(materials[0].histograms);
+    CHECK(materials[0].histograms->bins() == 4);
+    RenderOptions options;
+    options.method = RenderMethod::Exact;
+    auto exact = render(scene, materials, options);
+    options.method = RenderMethod::Gaussian;
+    auto gaussian = render(scene, materials, options);
+    options.method = RenderMethod::Reference;
+    options.seed = 1;
+    auto reference = render(scene, materials, options);
+    REQUIRE(exact);
+    REQUIRE(gaussian);
+    REQUIRE(reference);
+    CHECK(exact->method == RenderMethod::Exact);
+    CHECK(exact->samples == 1);
+    const ErrorSummary e = cmfilter_test::render_difference(*exact, *reference);
+    const ErrorSummary g = cmfilter_test::render_difference(*gaussian, *reference);
+    MESSAGE("exact vs reference: mean " << e.mean << ", max " << e.max << "; gaussian: mean " << g.mean << ", max "
+                                        << g.max);
+    CHECK(e.mean <= 0.5);
+    CHECK(g.mean > 5 * e.mean);
+
+    // Against the box mean of C0 over each pixel's 32 x 32 piecewise-constant
+    // texels, computed here: exact up to float32 weights.
+    auto camera = Camera::create(scene.camera);
+    REQUIRE(camera);
+    double worst = 0;
+    for (int y = 0; y < 32; ++y)
+        for (int x = 0; x < 32; ++x) {
+            const auto hit = intersect_scene(scene, camera->ray(x + 0.5, y + 0.5));
+            REQUIRE(hit);
+            const long x0 = std::lround(hit->hit.u * n) - 16, y0 = std::lround(hit->hit.v * n) - 16;
+            Rgb want;
+            for (long j = 0; j < 32; ++j)
+                for (long i = 0; i < 32; ++i) {
+                    const long tx = ((x0 + i) % n + n) % n, ty = ((y0 + j) % n + n) % n;
+                    want += (1.0 / 1024) * materials[0].map.evaluate(f[static_cast<std::size_t>(ty * n + tx)]);
+                }
+            const std::size_t p = static_cast<std::size_t>(y) * 32 + static_cast<std::size_t>(x);
+            worst = std::max({worst, std::abs(exact->rgb[3 * p] - want.r), std::abs(exact->rgb[3 * p + 1] - want.g),
+                              std::abs(exact->rgb[3 * p + 2] - want.b)});
+        }
+    MESSAGE("exact vs the box mean of C0 over the texels: largest difference " << worst);
+    CHECK(worst < 1e-4);
+}
+
+TEST_CASE("exact refuses a render without histograms, and a driver with too many values")
+{
+    const Scene scene = texture_scene(write_driver("quantised-small.exr", 16, 16, quantised_driver(16, 16)),
+                                      {0, 1, 0}, {0, 0, 0}, {0, 0, 1}, 1, 4, 4);
+    RenderOptions options;
+    options.method = RenderMethod::Exact;
+    auto no_histograms = render(scene, materials_of(scene), options);
+    REQUIRE_FALSE(no_histograms);
+    CHECK(no_histograms.error().kind == ErrorKind::BadInput);
+    CHECK(no_histograms.error().message.find("histogram pyramid") != std::string::npos);
+
+    std::vector<float> many(32 * 32);
+    for (std::size_t i = 0; i < many.size(); ++i) many[i] = 0.2f + 0.6f * static_cast<float>(i) / 1024.0f;
+    const Scene too_many = texture_scene(write_driver("many-values.exr", 32, 32, many), {0, 1, 0}, {0, 0, 0},
+                                         {0, 0, 1}, 1, 4, 4);
+    auto config = ColorConfig::load("");
+    REQUIRE(config);
+    MaterialOptions material_options;
+    material_options.histograms = true;
+    auto materials = prepare_materials(too_many, *config, material_options);
+    REQUIRE_FALSE(materials);
+    CHECK(materials.error().kind == ErrorKind::BadInput);
+    CHECK(materials.error().message.find("/surfaces/0/material/driver/image: ") != std::string::npos);
+    CHECK(materials.error().message.find("1024 distinct values") != std::string::npos);
 }
