@@ -33,12 +33,17 @@ Expected<AtomicOutput> AtomicOutput::begin(const std::string& destination)
     return out;
 }
 
+std::string lowercase_extension(const std::string& path)
+{
+    std::string ext = fs::path(path).extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ext;
+}
+
 Status check_output_path(const std::string& path, const std::string& extension)
 {
     if (!extension.empty()) {
-        std::string ext = fs::path(path).extension().string();
-        for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-        if (ext != extension)
+        if (lowercase_extension(path) != extension)
             return bad_input("output '" + path + "' has the wrong extension (expected a " +
                              extension + " file)");
     }

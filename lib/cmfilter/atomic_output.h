@@ -39,4 +39,7 @@ private:
 // it ends in that extension, compared case-insensitively.
 Status check_output_path(const std::string& path, const std::string& extension);
 
+// The extension of `path` with its dot, in lower case (".exr"); empty if none.
+std::string lowercase_extension(const std::string& path);
+
 }  // namespace cmfilter

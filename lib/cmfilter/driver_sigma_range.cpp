@@ -1,5 +1,7 @@
 #include "cmfilter/driver_sigma_range.h"
 
+#include "cmfilter/atomic_output.h"
+
 #include "cmfilter/driver_image.h"
 #include "cmfilter/image_reading.h"
 #include "cmfilter/moment_pyramid_info.h"
@@ -10,7 +12,6 @@
 #include "cmfilter/texture_lod.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -37,12 +38,7 @@ Status check_positive(double sigma, const std::string& path, const char* what)
     return ok();
 }
 
-bool ends_with_json(const std::string& path)
-{
-    std::string ext = fs::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    return ext == ".json";
-}
+bool ends_with_json(const std::string& path) { return lowercase_extension(path) == ".json"; }
 
 // The largest variance m2 - m1^2 of the box means of (f - c), level by level:
 // level 0 holds f - c itself (variance 0); each next level averages 2 x 2

@@ -190,8 +190,9 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
                         const double o = (j + 0.5) / probes.count - 0.5;
                         const FilteredNoise::Parameters f =
                             m.noise->filter(h.u + o * probes.step_u, h.v + o * probes.step_v, probes.width);
-                        albedo += options.method == RenderMethod::Naive ? m.map.evaluate(f.mean)
-                                                                        : m.table.lookup(f.mean, f.sigma);
+                        if (!supersampled)  // supersampled pixels take only the AOVs from here
+                            albedo += options.method == RenderMethod::Naive ? m.map.evaluate(f.mean)
+                                                                            : m.table.lookup(f.mean, f.sigma);
                         mean += f.mean;
                         sigma += f.sigma;
                     }

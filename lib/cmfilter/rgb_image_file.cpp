@@ -5,26 +5,13 @@
 
 #include <OpenImageIO/imageio.h>
 
-#include <cctype>
 #include <cmath>
-#include <filesystem>
 
 namespace cmfilter {
 
-namespace {
-
-std::string lower_extension(const std::string& path)
-{
-    std::string ext = std::filesystem::path(path).extension().string();
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return ext;
-}
-
-}  // namespace
-
 Status check_rgb_image_output(const std::string& path, bool exr_only)
 {
-    const std::string ext = lower_extension(path);
+    const std::string ext = lowercase_extension(path);
     if (exr_only && ext != ".exr") return bad_input("output '" + path + "' has the wrong extension (expected .exr)");
     if (ext != ".exr" && ext != ".png" && ext != ".jpg" && ext != ".jpeg")
         return bad_input("output '" + path + "' has the wrong extension (expected .exr, .png, .jpg or .jpeg)");
@@ -36,7 +23,7 @@ Status write_rgb_image(const std::string& path, int width, int height, int chann
                        const ImageAttributes& attributes, const ColorConfig& config)
 {
     if (auto st = check_rgb_image_output(path); !st) return st;
-    const bool exr = lower_extension(path) == ".exr";
+    const bool exr = lowercase_extension(path) == ".exr";
     if (!exr && channels != 3)
         return bad_input("output '" + path + "': PNG and JPEG need 3 channels, got " + std::to_string(channels));
     if (pixels.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * static_cast<std::size_t>(channels))
