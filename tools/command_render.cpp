@@ -6,14 +6,19 @@
 #include "cmfilter/render.h"
 #include "cmfilter/rgb_image_file.h"
 #include "cmfilter/scene_loading.h"
+#include "cmfilter/table_size_search.h"
 #include "cmfilter/version.h"
 
 #include <nlohmann/json.hpp>
 
 #include <unistd.h>
 
+#include <cmath>
+#include <iomanip>
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <sstream>
 
 namespace cmfilter::cli {
 
@@ -28,6 +33,8 @@ struct RenderArgs {
     std::uint64_t seed = 0;
     std::string footprint = "rms";
     std::string aov;
+    std::optional<double> tolerance;
+    std::optional<double> shortcut;
     std::string ocio_config;
     int threads = 0;
     bool json = false;
@@ -42,6 +49,49 @@ Status write_aov(const std::string& path, const RenderedImage& image, const std:
     return write_rgb_image(path, image.width, image.height, 1, values, "", a, config);
 }
 
+// "surface 0: 128 x 8 sqrt table, 12288 bytes (1.56% of 256 x 256); ..."
+std::string describe_table(std::size_t surface, const SurfaceMaterial& m)
+{
+    const TableAxes& ax = m.table.axes();
+    const GaussianColorTableOptions defaults;
+    const std::size_t bytes = m.table.data().size() * sizeof(float);
+    const std::size_t default_bytes = TableSize{defaults.values, defaults.sigmas, defaults.spacing}.bytes();
+    std::ostringstream s;
+    s << "surface " << surface << ": " << ax.values << " x " << ax.sigmas << " " << to_string(ax.spacing)
+      << " table, " << bytes << " bytes (" << std::setprecision(3)
+      << 100.0 * static_cast<double>(bytes) / static_cast<double>(default_bytes) << "% of "
+      << defaults.values << " x " << defaults.sigmas << ")";
+    if (m.fit.tolerance > 0)
+        s << ", lookup CIEDE2000 " << m.fit.statistic << " " << m.fit.error << " <= " << m.fit.tolerance
+          << " over sigma [0, " << m.fit.sigma_max << "]";
+    if (m.fit.plain_bound > 0)
+        s << "; C0(mean) directly below sigma " << m.plain.smallest() << " to " << m.plain.largest() << " (median "
+          << m.plain.median() << ", by mean; within " << m.fit.plain_bound
+          << " CIEDE2000 of the exact filtered colour)";
+    return s.str();
+}
+
+nlohmann::json table_json(const SurfaceMaterial& m)
+{
+    const TableAxes& ax = m.table.axes();
+    nlohmann::json j = {{"values", ax.values},
+                        {"sigmas", ax.sigmas},
+                        {"spacing", to_string(ax.spacing)},
+                        {"sigma_max", ax.sigma_max},
+                        {"bytes", m.table.data().size() * sizeof(float)},
+                        {"plain_bound", m.fit.plain_bound},
+                        {"plain_sigma", {{"smallest", m.plain.smallest()},
+                                         {"median", m.plain.median()},
+                                         {"largest", m.plain.largest()}}}};
+    if (m.fit.tolerance > 0)
+        j["tolerance"] = {{"de2000", m.fit.tolerance},
+                          {"statistic", m.fit.statistic},
+                          {"reached", m.fit.error},
+                          {"sigma_max_source", m.fit.sigma_max_how},
+                          {"candidates", m.fit.candidates}};
+    return j;
+}
+
 Status run(const RenderArgs& args)
 {
     if (auto st = check_rgb_image_output(args.output); !st) return st;
@@ -52,6 +102,16 @@ Status run(const RenderArgs& args)
     if (args.samples < 1 || args.samples > kMaxSamples)
         return bad_input("--spp " + std::to_string(args.samples) + " is out of range (expected 1 to " +
                          std::to_string(kMaxSamples) + ")");
+    if (args.tolerance && !(std::isfinite(*args.tolerance) && *args.tolerance > 0)) {
+        std::ostringstream msg;
+        msg << "--tolerance " << *args.tolerance << " is invalid (expected a CIEDE2000 difference > 0)";
+        return bad_input(msg.str());
+    }
+    if (args.shortcut && !(std::isfinite(*args.shortcut) && *args.shortcut >= 0)) {
+        std::ostringstream msg;
+        msg << "--shortcut " << *args.shortcut << " is invalid (expected a CIEDE2000 difference >= 0; 0 turns it off)";
+        return bad_input(msg.str());
+    }
     const std::string aov_paths[3] = {args.aov + ".mean.exr", args.aov + ".sigma.exr", args.aov + ".lod.exr"};
     if (!args.aov.empty())
         for (const auto& path : aov_paths)
@@ -65,6 +125,8 @@ Status run(const RenderArgs& args)
     MaterialOptions material_options;
     material_options.threads = args.threads;
     material_options.histograms = *method == RenderMethod::Exact;
+    material_options.tables.tolerance = args.tolerance;
+    material_options.tables.plain_bound = args.shortcut;
     if (talk) material_options.note = [](const std::string& line) { std::cerr << "render: " << line << "\n"; };
     auto materials = prepare_materials(*scene, *config, material_options);
     if (!materials) return materials.error();
@@ -113,12 +175,22 @@ Status run(const RenderArgs& args)
         j["size"] = {image->width, image->height};
         j["pixels_hit"] = hits;
         j["seconds"] = image->seconds;
+        j["tables"] = nlohmann::json::array();
+        for (const SurfaceMaterial& m : *materials) j["tables"].push_back(table_json(m));
+        if (image->method == RenderMethod::Gaussian)
+            j["footprints"] = {{"filtered", image->footprints}, {"plain", image->plain_footprints}};
         if (!args.aov.empty()) j["aov"] = {aov_paths[0], aov_paths[1], aov_paths[2]};
         std::cout << j.dump(2) << "\n";
     } else if (!args.quiet) {
         std::cout << "wrote " << args.output << ": " << image->width << " x " << image->height << ", "
                   << to_string(image->method) << ", " << image->samples << " ray(s) per pixel, " << hits
                   << " pixels on a surface, " << image->seconds << " s\n";
+        if (image->method == RenderMethod::Gaussian) {
+            for (std::size_t i = 0; i < materials->size(); ++i)
+                std::cout << "  " << describe_table(i, (*materials)[i]) << "\n";
+            std::cout << "  " << image->plain_footprints << " of " << image->footprints
+                      << " footprints took C0(mean) directly\n";
+        }
     }
     return ok();
 }
@@ -140,6 +212,14 @@ Command setup_render(CLI::App& parent)
     app->add_option("--probes", args->probes,
                     "Noise drivers: filter an anisotropic footprint as up to N probes along its major edge")
         ->capture_default_str();
+    app->add_option("--tolerance", args->tolerance,
+                    "Give every surface the smallest table whose lookup error (CIEDE2000, p99.9 against the exact "
+                    "filtered colour) is at most DE over that surface's sigma range (default: the scene's "
+                    "colormap tolerance, else the fixed 256 x 256 table)");
+    app->add_option("--shortcut", args->shortcut,
+                    "gaussian: take C0(mean) directly where sigma is so small that the exact filtered colour is "
+                    "within this CIEDE2000 of it (default: a tenth of the tolerance for a fitted table, else off; "
+                    "0: off)");
     app->add_option("--aov", args->aov, "Also write PREFIX.mean.exr, PREFIX.sigma.exr and PREFIX.lod.exr");
     app->add_option("--ocio-config", args->ocio_config,
                     "OpenColorIO config (default: $OCIO if set, else the built-in config)");

@@ -161,6 +161,28 @@ Expected<DriverSigmaRange> largest_driver_image_sigma(const std::string& path, i
     return out;
 }
 
+Expected<DriverSigmaRange> largest_surface_sigma(const Scene& scene, std::size_t surface, int threads)
+{
+    if (surface >= scene.surfaces.size())
+        return bad_input(scene.path + ": surface " + std::to_string(surface) + " does not exist (the scene has " +
+                         std::to_string(scene.surfaces.size()) + ")");
+    const DriverSource& driver = scene.surfaces[surface].material.driver;
+    Expected<DriverSigmaRange> range = [&]() -> Expected<DriverSigmaRange> {
+        switch (driver.kind) {
+        case DriverKind::Noise:
+            if (!driver.sigma_table_path.empty()) return largest_noise_table_sigma(driver.sigma_table_path);
+            return noise_global_sigma(driver.noise_spec, threads);
+        case DriverKind::Moments: return largest_moment_pyramid_sigma(driver.moments_path);
+        case DriverKind::Image: return largest_driver_image_sigma(driver.image_path, threads);
+        }
+        return runtime_error("unknown driver kind (internal error)");
+    }();
+    if (!range)
+        return Error{range.error().kind, scene.path + ": /surfaces/" + std::to_string(surface) +
+                                             "/material/driver: " + range.error().message};
+    return range;
+}
+
 Expected<DriverSigmaRange> largest_scene_sigma(const Scene& scene, const DriverSigmaOptions& options)
 {
     std::vector<std::size_t> chosen;
@@ -178,20 +200,8 @@ Expected<DriverSigmaRange> largest_scene_sigma(const Scene& scene, const DriverS
     DriverSigmaRange best;
     std::size_t best_surface = 0;
     for (std::size_t i : chosen) {
-        const DriverSource& driver = scene.surfaces[i].material.driver;
-        Expected<DriverSigmaRange> range = [&]() -> Expected<DriverSigmaRange> {
-            switch (driver.kind) {
-            case DriverKind::Noise:
-                if (!driver.sigma_table_path.empty()) return largest_noise_table_sigma(driver.sigma_table_path);
-                return noise_global_sigma(driver.noise_spec, options.threads);
-            case DriverKind::Moments: return largest_moment_pyramid_sigma(driver.moments_path);
-            case DriverKind::Image: return largest_driver_image_sigma(driver.image_path, options.threads);
-            }
-            return runtime_error("unknown driver kind (internal error)");
-        }();
-        if (!range)
-            return Error{range.error().kind, scene.path + ": /surfaces/" + std::to_string(i) +
-                                                 "/material/driver: " + range.error().message};
+        auto range = largest_surface_sigma(scene, i, options.threads);
+        if (!range) return range.error();
         if (range->sigma_max > best.sigma_max) {
             best = *range;
             best_surface = i;

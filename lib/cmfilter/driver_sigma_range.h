@@ -24,6 +24,7 @@
 #include "cmfilter/error.h"
 #include "cmfilter/scene.h"
 
+#include <cstddef>
 #include <string>
 
 namespace cmfilter {
@@ -50,5 +51,8 @@ Expected<DriverSigmaRange> largest_noise_table_sigma(const std::string& path);
 Expected<DriverSigmaRange> largest_moment_pyramid_sigma(const std::string& path);
 Expected<DriverSigmaRange> largest_driver_image_sigma(const std::string& path, int threads);
 Expected<DriverSigmaRange> largest_scene_sigma(const Scene& scene, const DriverSigmaOptions& options);
+// One surface's driver, as for a scene (messages name /surfaces/i/material/driver);
+// BadInput for a surface index out of range.
+Expected<DriverSigmaRange> largest_surface_sigma(const Scene& scene, std::size_t surface, int threads);
 
 }  // namespace cmfilter

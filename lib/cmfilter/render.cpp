@@ -2,6 +2,7 @@
 
 #include "cmfilter/anisotropic_probes.h"
 #include "cmfilter/camera.h"
+#include "cmfilter/gaussian_albedo.h"
 #include "cmfilter/noise_lattice.h"
 #include "cmfilter/parallel_for.h"
 #include "cmfilter/stopwatch.h"
@@ -162,11 +163,13 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
     image.lod.assign(pixels, 0.0f);
 
     std::atomic<int> rows_done{0};
+    std::atomic<std::size_t> footprints{0}, plain_footprints{0};
     std::mutex progress_mutex;
     const Stopwatch clock;
     parallel_for(image.height, options.threads, [&](int y) {
         std::vector<double> xs, ys;
         std::vector<float> weights;
+        AlbedoCounts counts;
         for (int x = 0; x < image.width; ++x) {
             const std::size_t p = static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) +
                                   static_cast<std::size_t>(x);
@@ -192,7 +195,7 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
                             m.noise->filter(h.u + o * probes.step_u, h.v + o * probes.step_v, probes.width);
                         if (!supersampled)  // supersampled pixels take only the AOVs from here
                             albedo += options.method == RenderMethod::Naive ? m.map.evaluate(f.mean)
-                                                                            : m.table.lookup(f.mean, f.sigma);
+                                                                            : gaussian_albedo(m, f.mean, f.sigma, counts);
                         mean += f.mean;
                         sigma += f.sigma;
                     }
@@ -208,7 +211,7 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
                     if (options.method == RenderMethod::Naive)
                         colour = shade(m.map.evaluate(f.mean), h.normal, scene.light);
                     else if (options.method == RenderMethod::Gaussian)
-                        colour = shade(m.table.lookup(f.mean, f.sigma), h.normal, scene.light);
+                        colour = shade(gaussian_albedo(m, f.mean, f.sigma, counts), h.normal, scene.light);
                     else if (options.method == RenderMethod::Exact)
                         colour = shade(exact_albedo(m, h, f.lod, bin_colors[static_cast<std::size_t>(hit->surface)],
                                                     weights),
@@ -235,6 +238,8 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
             image.rgb[3 * p + 1] = static_cast<float>(colour.g);
             image.rgb[3 * p + 2] = static_cast<float>(colour.b);
         }
+        footprints += counts.footprints;
+        plain_footprints += counts.plain;
         const int done = ++rows_done;
         if (options.progress) {
             const std::lock_guard<std::mutex> lock(progress_mutex);
@@ -242,6 +247,8 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
         }
     });
     image.seconds = clock.elapsed_ms() / 1000.0;
+    image.footprints = footprints;
+    image.plain_footprints = plain_footprints;
     return image;
 }
 

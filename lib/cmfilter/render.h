@@ -34,6 +34,7 @@
 #include "cmfilter/scene.h"
 #include "cmfilter/scene_materials.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -72,6 +73,9 @@ struct RenderedImage {
     std::vector<float> distance, mean, sigma, lod;
     RenderMethod method = RenderMethod::Gaussian;
     int samples = 1;           // rays per pixel
+    // gaussian: footprints (pixels or probes) coloured, and how many took
+    // C0(mean) directly (the small-sigma shortcut, gaussian_albedo.h).
+    std::size_t footprints = 0, plain_footprints = 0;
     double seconds = 0;        // wall time of the pixel loop
 };
 

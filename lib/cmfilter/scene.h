@@ -59,6 +59,10 @@ struct ColorMapSource {
     double domain_min = 0, domain_max = 1;
     WrapMode wrap = WrapMode::Clamp;
     std::string colorspace;  // empty: decided from the file
+    // With an image: bake the smallest table whose lookup error stays within
+    // this CIEDE2000 over the surface's sigma range (tolerance_tables.h)
+    // instead of the default 256 x 256 one.
+    std::optional<double> tolerance;
 };
 
 // The driver f: a procedural noise (spec text, noise_spec.h) with an

@@ -202,13 +202,13 @@ Expected<std::string> read_colorspace(const JsonValue& value)
 
 Expected<ColorMapSource> read_colormap(const JsonValue& value, const fs::path& scene_folder)
 {
-    auto object = JsonObject::read(value, {"table", "image", "domain", "wrap", "colorspace"});
+    auto object = JsonObject::read(value, {"table", "image", "domain", "wrap", "colorspace", "tolerance"});
     if (!object) return object.error();
     const auto read_path = [&](const JsonValue& v) { return read_file_path(v, scene_folder); };
     ColorMapSource colormap;
     Status status = object->require_one_of({"table", "image"});
     if (status && object->has("table")) {
-        status = object->reject_any_of({"domain", "wrap", "colorspace"},
+        status = object->reject_any_of({"domain", "wrap", "colorspace", "tolerance"},
                                        "applies only to an image colour map, not to a table");
         if (status) status = object->read_required("table", colormap.table_path, read_path);
     } else if (status) {
@@ -217,6 +217,7 @@ Expected<ColorMapSource> read_colormap(const JsonValue& value, const fs::path& s
         if (status) status = object->read_required("domain", domain, read_domain);
         if (status) status = object->read_optional("wrap", colormap.wrap, read_wrap);
         if (status) status = object->read_optional("colorspace", colormap.colorspace, read_colorspace);
+        if (status) status = object->read_optional("tolerance", colormap.tolerance, read_positive);
         if (status) std::tie(colormap.domain_min, colormap.domain_max) = domain;
     }
     if (!status) return status.error();

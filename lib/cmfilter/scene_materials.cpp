@@ -8,6 +8,7 @@
 #include "cmfilter/noise_sigma_table_file.h"
 #include "cmfilter/noise_spec.h"
 #include "cmfilter/table_color_map.h"
+#include "cmfilter/tolerance_tables.h"
 
 #include <filesystem>
 #include <memory>
@@ -51,12 +52,14 @@ Status load_colormap(const Scene& scene, std::size_t i, const ColorConfig& confi
     load.colorspace = source.colorspace;
     auto map = load_color_map(load, config);
     if (!map) return located(map.error(), prefix);
-    GaussianColorTableOptions table_options;
-    table_options.threads = options.threads;
-    auto table = GaussianColorTable::bake(map->map, table_options);
-    if (!table) return located(table.error(), prefix);
     m.map = std::move(map->map);
     m.map_path = source.image_path;
+    const std::optional<double>& tolerance = options.tables.tolerance;
+    if (tolerance ? *tolerance > 0 : source.tolerance.has_value()) return ok();  // fitted later
+    GaussianColorTableOptions table_options;
+    table_options.threads = options.threads;
+    auto table = GaussianColorTable::bake(m.map, table_options);
+    if (!table) return located(table.error(), prefix);
     m.table = std::move(*table);
     return ok();
 }
@@ -231,6 +234,9 @@ Expected<std::vector<SurfaceMaterial>> prepare_materials(const Scene& scene, con
         if (auto st = load_driver(scene, i, options, materials[i]); !st) return st.error();
         if (options.histograms)
             if (auto st = load_histograms(scene, i, options, materials[i]); !st) return st.error();
+        TableChoiceOptions tables = options.tables;
+        tables.threads = options.threads;
+        if (auto st = choose_surface_table(scene, i, materials[i], tables); !st) return st.error();
     }
     return materials;
 }

@@ -26,7 +26,9 @@
 #include "cmfilter/filtered_texture.h"
 #include "cmfilter/gaussian_color_table.h"
 #include "cmfilter/histogram_pyramid.h"
+#include "cmfilter/plain_lookup.h"
 #include "cmfilter/scene.h"
+#include "cmfilter/table_fit.h"
 
 #include <functional>
 #include <memory>
@@ -39,6 +41,10 @@ namespace cmfilter {
 struct SurfaceMaterial {
     ColorMap map;                       // C0, scene-linear
     GaussianColorTable table;           // T(mean, sigma)
+    // The small-sigma shortcut (plain_lookup.h): the gaussian method takes
+    // C0(mean) itself where sigma < plain.below(mean); empty: never.
+    PlainLookupSigma plain;
+    TableFit fit;                       // how the table was chosen (tolerance_tables.h)
     std::optional<FilteredNoise> noise;     // a procedural driver, or
     std::optional<FilteredTexture> texture; // a texture driver: exactly one is set
     std::string map_path, table_path;   // provenance (empty table_path: baked here)
@@ -60,9 +66,13 @@ struct MaterialOptions {
     // Bake each texture driver's histogram pyramid (render --method exact);
     // BadInput for a noise driver or a driver with too many distinct values.
     bool histograms = false;
+    // Each surface's table: the fixed default, or fitted to a tolerance, and
+    // the small-sigma shortcut (tolerance_tables.h). Its threads are these.
+    TableChoiceOptions tables;
 };
 
-// One SurfaceMaterial per scene surface, in order. Errors name the surface's
+// One SurfaceMaterial per scene surface, in order, its table chosen by
+// choose_surface_table (a surface fitted to a tolerance skips the default bake). Errors name the surface's
 // key (/surfaces/i/material/...) and the file: unreadable tables, maps,
 // moment pyramids or driver images, a sigma table baked for another noise, a
 // moments file whose recorded driver is gone (Io) or changed (BadInput), or

@@ -590,6 +590,32 @@ TEST_CASE("a table colour map with an image key is an error")
           "/surfaces/1/material/colormap/wrap: applies only to an image colour map, not to a table");
 }
 
+TEST_CASE("an image colour map takes a tolerance: a CIEDE2000 > 0, not beside a table")
+{
+    SceneFolder folder;
+    json text = example_scene();
+    auto plain = folder.parse(text);
+    REQUIRE(plain);
+    CHECK_FALSE(plain->surfaces[0].material.colormap.tolerance.has_value());
+    text["surfaces"][0]["material"]["colormap"]["tolerance"] = 0.5;
+    auto scene = folder.parse(text);
+    REQUIRE(scene);
+    REQUIRE(scene->surfaces[0].material.colormap.tolerance.has_value());
+    CHECK(*scene->surfaces[0].material.colormap.tolerance == 0.5);
+    text["surfaces"][0]["material"]["colormap"]["tolerance"] = 0;
+    CHECK(folder.after_scene_path(folder.error_of(text)) ==
+          "/surfaces/0/material/colormap/tolerance: expected a number > 0, got 0");
+    text["surfaces"][0]["material"]["colormap"]["tolerance"] = "1";
+    CHECK(contains(folder.error_of(text), "/surfaces/0/material/colormap/tolerance"));
+    text = example_scene();
+    text["surfaces"][1]["material"]["colormap"]["tolerance"] = 1;
+    CHECK(folder.after_scene_path(folder.error_of(text)) ==
+          "/surfaces/1/material/colormap/tolerance: applies only to an image colour map, not to a table");
+    text = example_scene();
+    text["surfaces"][0]["material"]["colormap"]["tolerence"] = 1;
+    CHECK(contains(folder.error_of(text), "/surfaces/0/material/colormap/tolerence: unknown key"));
+}
+
 TEST_CASE("an image colour map without a domain is an error")
 {
     SceneFolder folder;
