@@ -46,6 +46,7 @@ std::string bench_chart_script(const SceneBench& bench, const std::string& data_
       << "     '' using ($1 == 2 ? $3 : 1/0):4 with points pt 5 ps 1.4 lc rgb 'dark-cyan' title 'gaussian (linear sigma spacing)', \\\n"
       << "     '' using ($1 == 3 ? $3 : 1/0):4 with linespoints pt 13 ps 1.4 lc rgb 'dark-green' title 'supersample (rays per pixel)', \\\n"
       << "     '' using ($1 == 4 ? $3 : 1/0):4 with points pt 11 ps 1.4 lc rgb 'orange' title 'gaussian 256x256, other footprint widths', \\\n"
+      << "     '' using ($1 == 5 ? $3 : 1/0):4 with points pt 15 ps 1.4 lc rgb 'purple' title 'gaussian, tolerance tables or small-sigma shortcut', \\\n"
       << "     '' using ($1 == 2 ? 1/0 : $3):4:2 with labels offset 0.8,0.6 left font 'sans,9' notitle, \\\n"
       << "     f(x) with lines dt 2 lc rgb 'black' title 'target 1.0'\n";
     return s.str();
@@ -58,13 +59,17 @@ Status write_bench_chart(const SceneBench& bench, const std::string& png_path)
     if (!out) return out.error();
     const std::string data = out->temp_path() + ".dat", script = out->temp_path() + ".gp";
     {
-        // series: 0 naive, 1 gaussian sqrt, 2 gaussian linear, 3 supersample (in rays order)
+        // series: 0 naive, 1 gaussian sqrt, 2 gaussian linear, 3 supersample (in rays order),
+        // 4 other footprint widths, 5 tolerance tables or the small-sigma shortcut
         std::ofstream d(data);
         for (const BenchRow& r : bench.rows) {
             const BenchConfiguration& c = r.configuration;
             int series = 0;
             std::string label = "naive";
-            if (c.method == RenderMethod::Gaussian && c.footprint != FootprintWidth::Rms) {
+            if (c.method == RenderMethod::Gaussian && (c.tolerance > 0 || c.shortcut > 0)) {
+                series = 5;
+                label = c.label().substr(std::string("gaussian ").size());
+            } else if (c.method == RenderMethod::Gaussian && c.footprint != FootprintWidth::Rms) {
                 series = 4;
                 label = to_string(c.footprint);
             } else if (c.method == RenderMethod::Gaussian) {

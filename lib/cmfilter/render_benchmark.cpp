@@ -1,6 +1,7 @@
 #include "cmfilter/render_benchmark.h"
 
 #include "cmfilter/ciede2000.h"
+#include "cmfilter/tolerance_tables.h"
 
 #include <algorithm>
 #include <limits>
@@ -13,9 +14,23 @@ namespace cmfilter {
 std::string BenchConfiguration::label() const
 {
     switch (method) {
-    case RenderMethod::Gaussian:
-        return "gaussian " + std::to_string(table_values) + "x" + std::to_string(table_sigmas) + " " +
-               to_string(spacing) + (footprint == FootprintWidth::Rms ? "" : std::string(" ") + to_string(footprint));
+    case RenderMethod::Gaussian: {
+        std::ostringstream s;
+        s << "gaussian ";
+        if (tolerance > 0)
+            s << "tol " << tolerance;
+        else
+            s << table_values << "x" << table_sigmas << " " << to_string(spacing);
+        if (footprint != FootprintWidth::Rms) s << " " << to_string(footprint);
+        const double default_shortcut = tolerance > 0 ? kPlainLookupFraction * tolerance : 0.0;
+        if (shortcut != default_shortcut) {
+            if (shortcut > 0)
+                s << " shortcut " << shortcut;
+            else
+                s << " no-shortcut";
+        }
+        return s.str();
+    }
     case RenderMethod::Supersample: return "supersample " + std::to_string(samples);
     default: return to_string(method);
     }
@@ -30,6 +45,19 @@ std::vector<BenchConfiguration> default_bench_configurations()
             c.push_back({RenderMethod::Gaussian, 1, n, n, s, FootprintWidth::Rms});
     for (FootprintWidth f : {FootprintWidth::Area, FootprintWidth::Major, FootprintWidth::Minor})
         c.push_back({RenderMethod::Gaussian, 1, 256, 256, SigmaSpacing::Sqrt, f});
+    for (double tolerance : {1.0, 0.5}) {
+        BenchConfiguration fitted{RenderMethod::Gaussian, 1, 256, 256, SigmaSpacing::Sqrt, FootprintWidth::Rms};
+        fitted.tolerance = tolerance;
+        fitted.shortcut = kPlainLookupFraction * tolerance;
+        c.push_back(fitted);
+        if (tolerance == 1.0) {
+            fitted.shortcut = 0;
+            c.push_back(fitted);
+        }
+    }
+    BenchConfiguration shortcut{RenderMethod::Gaussian, 1, 256, 256, SigmaSpacing::Sqrt, FootprintWidth::Rms};
+    shortcut.shortcut = 0.1;
+    c.push_back(shortcut);
     for (int spp : {1, 4, 16, 64, 256})
         c.push_back({RenderMethod::Supersample, spp, 256, 256, SigmaSpacing::Sqrt, FootprintWidth::Rms});
     return c;
@@ -101,28 +129,47 @@ Expected<SceneBench> bench_scene(const Scene& scene, std::vector<SurfaceMaterial
         options.note(scene.path + ": reference (" + std::to_string(reference->samples) + " rays per pixel) in " +
                      std::to_string(bench.reference_seconds) + " s");
 
-    // The tables every surface holds now; re-baked when a configuration asks for others.
-    using TableKey = std::tuple<int, int, SigmaSpacing>;
+    // The tables every surface holds now; re-baked (or fitted) when a configuration asks for others.
+    using TableKey = std::tuple<int, int, SigmaSpacing, double, double>;
     std::optional<TableKey> baked;
     for (const BenchConfiguration& c : options.configurations) {
         BenchRow row;
         row.configuration = c;
-        const TableKey key{c.table_values, c.table_sigmas, c.spacing};
+        const TableKey key{c.table_values, c.table_sigmas, c.spacing, c.tolerance, c.shortcut};
         if (c.method == RenderMethod::Gaussian && !(baked == key)) {
-            GaussianColorTableOptions to;
-            to.values = c.table_values;
-            to.sigmas = c.table_sigmas;
-            to.spacing = c.spacing;
-            to.threads = options.threads;
-            for (SurfaceMaterial& m : materials) {
-                auto table = GaussianColorTable::bake(m.map, to);
-                if (!table) return table.error();
-                m.table = std::move(*table);
+            if (c.tolerance <= 0) {
+                GaussianColorTableOptions to;
+                to.values = c.table_values;
+                to.sigmas = c.table_sigmas;
+                to.spacing = c.spacing;
+                to.threads = options.threads;
+                for (SurfaceMaterial& m : materials) {
+                    auto table = GaussianColorTable::bake(m.map, to);
+                    if (!table) return table.error();
+                    m.table = std::move(*table);
+                }
             }
+            TableChoiceOptions choice;
+            choice.tolerance = std::max(0.0, c.tolerance);  // 0: keep the tables just baked
+            choice.plain_bound = c.shortcut;
+            choice.threads = options.threads;
+            if (auto st = choose_surface_tables(scene, materials, choice); !st) return st.error();
             baked = key;
         }
         if (c.method == RenderMethod::Gaussian)
-            for (const SurfaceMaterial& m : materials) row.table_bytes += m.table.data().size() * sizeof(float);
+            for (std::size_t i = 0; i < materials.size(); ++i) {
+                const SurfaceMaterial& m = materials[i];
+                const TableAxes& ax = m.table.axes();
+                row.table_bytes += m.table.data().size() * sizeof(float);
+                row.table_error = std::max(row.table_error, m.fit.error);
+                if (i == 0) {
+                    row.table_values = ax.values;
+                    row.table_sigmas = ax.sigmas;
+                    row.spacing = ax.spacing;
+                } else if (ax.values != row.table_values || ax.sigmas != row.table_sigmas || ax.spacing != row.spacing) {
+                    row.table_values = row.table_sigmas = 0;
+                }
+            }
         RenderOptions r;
         r.method = c.method;
         r.samples = c.samples;
@@ -137,6 +184,8 @@ Expected<SceneBench> bench_scene(const Scene& scene, std::vector<SurfaceMaterial
             if (!image) return image.error();
             row.seconds = std::min(row.seconds, image->seconds);
         }
+        row.footprints = image->footprints;
+        row.plain_footprints = image->plain_footprints;
         row.error = compare(*reference, *image, bands);
         if (options.note)
             options.note(scene.path + ": " + c.label() + ": " + std::to_string(row.seconds) + " s, mean dE00 " +
@@ -151,27 +200,38 @@ std::string bench_csv(const std::vector<SceneBench>& benches)
     std::ostringstream s;
     s.precision(6);
     s << "scene,configuration,method,spp,table_values,table_sigmas,spacing,footprint,table_bytes,seconds,"
-         "mean,p95,max,near_mean,near_p95,middle_mean,middle_p95,horizon_mean,horizon_p95\n";
+         "mean,p95,max,near_mean,near_p95,middle_mean,middle_p95,horizon_mean,horizon_p95,"
+         "tolerance,table_error,shortcut,footprints,plain_footprints\n";
     auto errors = [&](const BandedError& e) {
         s << e.all.mean << "," << e.all.p95 << "," << e.all.max << "," << e.near.mean << "," << e.near.p95 << ","
-          << e.middle.mean << "," << e.middle.p95 << "," << e.horizon.mean << "," << e.horizon.p95 << "\n";
+          << e.middle.mean << "," << e.middle.p95 << "," << e.horizon.mean << "," << e.horizon.p95;
     };
     for (const SceneBench& b : benches) {
         s << b.scene << ",reference," << "reference," << b.reference_samples << ",,,,,0," << b.reference_seconds << ",";
         errors(BandedError{});
+        s << ",,,,,\n";
         s << b.scene << ",reference-repeat," << "reference," << b.reference_samples << ",,,,,0," << b.reference_seconds
           << ",";
         errors(b.reference_repeatability);
+        s << ",,,,,\n";
         for (const BenchRow& r : b.rows) {
             const BenchConfiguration& c = r.configuration;
             s << b.scene << "," << c.label() << "," << to_string(c.method) << "," << c.samples << ",";
-            if (c.method == RenderMethod::Gaussian)
-                s << c.table_values << "," << c.table_sigmas << "," << to_string(c.spacing);
+            if (c.method == RenderMethod::Gaussian && r.table_values > 0)
+                s << r.table_values << "," << r.table_sigmas << "," << to_string(r.spacing);
             else
                 s << ",,";
             s << "," << (c.method == RenderMethod::Supersample ? "" : to_string(c.footprint));
             s << "," << r.table_bytes << "," << r.seconds << ",";
             errors(r.error);
+            if (c.method == RenderMethod::Gaussian) {
+                s << ",";
+                if (c.tolerance > 0) s << c.tolerance << "," << r.table_error;
+                else s << ",";
+                s << "," << c.shortcut << "," << r.footprints << "," << r.plain_footprints << "\n";
+            } else {
+                s << ",,,,,\n";
+            }
         }
     }
     return s.str();

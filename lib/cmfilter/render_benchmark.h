@@ -28,12 +28,23 @@ struct BenchConfiguration {
     int table_sigmas = 256;
     SigmaSpacing spacing = SigmaSpacing::Sqrt;
     FootprintWidth footprint = FootprintWidth::Rms;  // naive, gaussian
-    std::string label() const;        // e.g. "gaussian 64x64 sqrt", "gaussian 256x256 sqrt major", "supersample 16"
+    // gaussian: > 0, every surface gets the smallest table that meets this
+    // CIEDE2000 over its own sigma range instead (tolerance_tables.h; the
+    // table sizes above are then unused)
+    double tolerance = 0;
+    // gaussian: the small-sigma shortcut's CIEDE2000 bound (plain_lookup.h); 0: off
+    double shortcut = 0;
+    // e.g. "gaussian 64x64 sqrt", "gaussian 256x256 sqrt major", "gaussian 256x256 sqrt shortcut 0.1",
+    // "gaussian tol 1" (shortcut kPlainLookupFraction x 1), "gaussian tol 1 no-shortcut", "supersample 16"
+    std::string label() const;
 };
 
 // naive; gaussian with 16 x 16, 64 x 64 and 256 x 256 tables, sqrt and linear
 // sigma spacing (rms footprint width), and the 256 x 256 sqrt table with the
-// area, major and minor footprint widths; supersample with 1, 4, 16, 64 and
+// area, major and minor footprint widths; gaussian with tables fitted to
+// tolerances 1 and 0.5, with the small-sigma shortcut at its default bound (a
+// tenth of the tolerance), tolerance 1 without the shortcut, and the 256 x 256
+// sqrt table with the shortcut at bound 0.1; supersample with 1, 4, 16, 64 and
 // 256 rays per pixel.
 std::vector<BenchConfiguration> default_bench_configurations();
 
@@ -45,6 +56,12 @@ struct BenchRow {
     BenchConfiguration configuration;
     double seconds = 0;           // pixel loop, fastest of the repeats
     std::size_t table_bytes = 0;  // gaussian: float32 RGB tables of every surface
+    double table_error = 0;       // gaussian with a tolerance: the largest fitted table's lookup error (p99.9)
+    // gaussian: the tables' axes when every surface's agree (else values 0)
+    int table_values = 0, table_sigmas = 0;
+    SigmaSpacing spacing = SigmaSpacing::Sqrt;
+    std::size_t footprints = 0;   // gaussian: footprints (pixels or probes) coloured
+    std::size_t plain_footprints = 0;  // of which took C0(mean) directly (the shortcut)
     BandedError error;            // against the reference
 };
 
@@ -70,7 +87,7 @@ struct BenchOptions {
 };
 
 // `materials` are re-baked in place for each gaussian configuration (their
-// colour maps stay).
+// colour maps stay), or fitted to its tolerance (choose_surface_tables).
 Expected<SceneBench> bench_scene(const Scene& scene, std::vector<SurfaceMaterial>& materials,
                                  const BenchOptions& options);
 
