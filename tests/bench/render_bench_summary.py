@@ -2,27 +2,18 @@
 gaussian (256x256 sqrt table, rms footprint) against naive, the supersample of
 about gaussian's time, and the reference.
     python3 render_bench_summary.py render-bench.csv"""
-import csv
 import math
 import os
 import sys
 
-rows = list(csv.DictReader(open(sys.argv[1])))
-scenes = []
-for r in rows:
-    if r["scene"] not in scenes:
-        scenes.append(r["scene"])
+from bench_csv import f, read
+from bench_csv import pick as pick_row
+
+rows, scenes = read(sys.argv[1])
 
 
 def pick(scene, configuration):
-    for r in rows:
-        if r["scene"] == scene and r["configuration"] == configuration:
-            return r
-    raise KeyError(configuration)
-
-
-def f(r, key):
-    return float(r[key])
+    return pick_row(rows, scene, configuration)
 
 
 print("| scene | gaussian mean (near / middle / horizon) | naive mean | naive / gaussian error | gaussian / naive time "

@@ -4,26 +4,17 @@ bytes of the tables fitted to tolerances 1 and 0.5 against the fixed 256 x 256
 default and the render error each reaches against the reference; then the
 shortcut's share of footprints and its effect on error and time.
     python3 tolerance_render_summary.py bench.csv"""
-import csv
 import os
 import sys
 
-rows = list(csv.DictReader(open(sys.argv[1])))
-scenes = []
-for r in rows:
-    if r["scene"] not in scenes:
-        scenes.append(r["scene"])
+from bench_csv import f, read
+from bench_csv import pick as pick_row
+
+rows, scenes = read(sys.argv[1])
 
 
 def pick(scene, configuration):
-    for r in rows:
-        if r["scene"] == scene and r["configuration"] == configuration:
-            return r
-    raise KeyError(configuration)
-
-
-def f(r, key):
-    return float(r[key])
+    return pick_row(rows, scene, configuration)
 
 
 def table(r):

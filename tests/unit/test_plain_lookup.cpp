@@ -2,15 +2,10 @@
 // brute-force quadrature of eq. 10 (tests/support/reference_convolution.h):
 // below the threshold C0(v) is within the bound of the exact T(v, sigma) at
 // fresh random points, and one grid step above it the bound fails at a cell
-// end, so the threshold is the largest the grid allows. The gaussian method
-// takes C0(mean) exactly where the threshold says (render.h's counts, checked
-// against the naive method's colours).
+// end, so the threshold is the largest the grid allows.
 #include "cmfilter/plain_lookup.h"
 
 #include "cmfilter/ciede2000.h"
-#include "cmfilter/color_map_loading.h"
-#include "cmfilter/noise_spec.h"
-#include "cmfilter/render.h"
 
 #include "unit_test_support.h"
 
@@ -20,7 +15,6 @@
 #include <cmath>
 #include <random>
 #include <string>
-#include <vector>
 
 using namespace cmfilter;
 using cmfilter_test::MapPair;
@@ -154,62 +148,4 @@ TEST_CASE("bad small-sigma options are refused, naming the value")
     options.sigma_cap = 0.2;
     options.points_per_texel = 0;
     CHECK_FALSE(plain_lookup_sigma(p.map, options));
-}
-
-TEST_CASE("the gaussian method takes C0 of each probe's mean where the shortcut applies, and counts it")
-{
-    // A ground plane under a terrain-coloured fBm; a flat map would make every
-    // colour equal, so use the bundled terrain map with a shortcut that covers
-    // every sigma (a constant threshold at the cap): the gaussian render then
-    // equals the naive one, which colours each probe C0(mean).
-    Scene scene;
-    scene.path = "test-scene";
-    scene.camera.position = {0, 1.5, 0};
-    scene.camera.look_at = {0, 0.9, 10};
-    scene.camera.width = 32;
-    scene.camera.height = 18;
-    Surface plane;
-    plane.mapping.u_axis = {0.5, 0, 0};
-    plane.mapping.v_axis = {0, 0, 0.5};
-    scene.surfaces.push_back(plane);
-    auto config = ColorConfig::load("");
-    REQUIRE(config);
-    ColorMapLoadOptions load;
-    load.path = std::string(CMFILTER_SOURCE_DIR) + "/luts/terrain.png";
-    load.vmin = -0.68;
-    load.vmax = 0.68;
-    auto map = load_color_map(load, *config);
-    REQUIRE(map);
-    auto noise = make_noise(*parse_noise_spec("fbm:base=gradient,octaves=6"));
-    REQUIRE(noise);
-    auto sigmas = NoiseSigmaTable::create(-9, 0.25, std::vector<double>(45, 0.05));
-    REQUIRE(sigmas);
-    std::vector<SurfaceMaterial> materials(1);
-    materials[0].map = map->map;
-    GaussianColorTableOptions table_options;
-    table_options.values = 16;
-    table_options.sigmas = 16;
-    auto table = GaussianColorTable::bake(materials[0].map, table_options);
-    REQUIRE(table);
-    materials[0].table = std::move(*table);
-    materials[0].noise.emplace(std::move(*noise), std::move(*sigmas));
-
-    RenderOptions options;
-    options.method = RenderMethod::Gaussian;
-    auto lookups = render(scene, materials, options);
-    REQUIRE(lookups);
-    CHECK(lookups->footprints > 0);
-    CHECK(lookups->plain_footprints == 0);
-
-    const double h = (load.vmax - load.vmin) / static_cast<double>(materials[0].map.texels.size());
-    materials[0].plain = PlainLookupSigma(load.vmin - 100, h, std::vector<float>(100000, 0.06f));  // 0.06 > 0.05
-    auto shortcut = render(scene, materials, options);
-    options.method = RenderMethod::Naive;
-    auto naive = render(scene, materials, options);
-    REQUIRE(shortcut);
-    REQUIRE(naive);
-    CHECK(shortcut->plain_footprints == shortcut->footprints);
-    CHECK(shortcut->footprints == lookups->footprints);
-    CHECK(shortcut->rgb == naive->rgb);
-    CHECK(shortcut->rgb != lookups->rgb);
 }

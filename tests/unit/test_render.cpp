@@ -2,7 +2,8 @@
 // references with different seeds agree (the issue's check on the reference
 // itself), results do not depend on the thread count, misses are background,
 // and the footprint widths match their definitions, rms against a
-// Monte-Carlo variance of a linear function over the parallelogram.
+// Monte-Carlo variance of a linear function over the parallelogram; the
+// small-sigma shortcut colours a probe C0(mean) exactly where it applies.
 #include "cmfilter/color_config.h"
 #include "cmfilter/color_map_loading.h"
 #include "cmfilter/anisotropic_probes.h"
@@ -236,4 +237,36 @@ TEST_CASE("exact refuses a noise driver, in render and in prepare_materials, nam
     CHECK(materials.error().message ==
           "test-scene: /surfaces/0/material/driver: exact needs a texture driver with at most 256 distinct values; "
           "noise drivers have no exact filtering distribution");
+}
+
+TEST_CASE("the gaussian method takes C0 of each probe's mean where the small-sigma shortcut applies, and counts it")
+{
+    // Every probe's sigma is the placeholder table's 0.1; a threshold above it
+    // at every mean sends every probe to C0(mean): the naive method's colours.
+    PlaneScene s = plane_scene(32, 18);
+    RenderOptions options;
+    options.method = RenderMethod::Gaussian;
+    auto lookups = render(s.scene, s.materials, options);
+    REQUIRE(lookups);
+    CHECK(lookups->footprints > 0);
+    CHECK(lookups->plain_footprints == 0);
+
+    const ColorMap& map = s.materials[0].map;
+    s.materials[0].plain = PlainLookupSigma(map.vmin - 100, map.texel_width(), std::vector<float>(100000, 0.11f));
+    auto shortcut = render(s.scene, s.materials, options);
+    options.method = RenderMethod::Naive;
+    auto naive = render(s.scene, s.materials, options);
+    REQUIRE(shortcut);
+    REQUIRE(naive);
+    CHECK(shortcut->plain_footprints == shortcut->footprints);
+    CHECK(shortcut->footprints == lookups->footprints);
+    CHECK(shortcut->rgb == naive->rgb);
+    CHECK(shortcut->rgb != lookups->rgb);
+    // A threshold below every probe's sigma changes nothing.
+    s.materials[0].plain = PlainLookupSigma(map.vmin - 100, map.texel_width(), std::vector<float>(100000, 0.09f));
+    options.method = RenderMethod::Gaussian;
+    auto below = render(s.scene, s.materials, options);
+    REQUIRE(below);
+    CHECK(below->plain_footprints == 0);
+    CHECK(below->rgb == lookups->rgb);
 }
