@@ -4,8 +4,14 @@
 // reference of `reference_samples` rays per pixel, over the pixels whose
 // centre ray hits a surface, and per distance band: the hit pixels split in
 // three equal-count bands by the centre ray's distance (near, middle,
-// horizon). A second reference with another seed measures how repeatable the
-// reference itself is (the issue asks for <= 0.2 mean CIEDE2000).
+// horizon). A second reference with other seeds measures how repeatable the
+// reference itself is: the two must differ by at most `reference_repeat`
+// mean CIEDE2000 (0.2). Where a scene's driver is too fine for that at
+// `reference_samples` rays (a noise far below the pixel), both references
+// grow until it holds: each round renders both once more with fresh seeds and
+// averages it in, so the rays per pixel go N, 2N, 3N, ... up to
+// `max_reference_samples`: the fewest rays that make the reference as
+// repeatable as asked (the rows then say how many it took).
 #pragma once
 
 #include "cmfilter/error.h"
@@ -53,15 +59,17 @@ struct SceneBench {
     int width = 0, height = 0;
     std::size_t pixels_hit = 0;
     double near_distance = 0, horizon_distance = 0;  // band limits: the hit distances' terciles
-    double reference_seconds = 0;
-    int reference_samples = 0;
-    BandedError reference_repeatability;  // reference (seed) against reference (seed + 1)
+    double reference_seconds = 0;  // the reference's rounds together
+    int reference_samples = 0;     // rays per pixel of the reference, all rounds together
+    BandedError reference_repeatability;  // the reference against the second one (other seeds)
     std::vector<BenchRow> rows;
 };
 
 struct BenchOptions {
     std::vector<BenchConfiguration> configurations = default_bench_configurations();
-    int reference_samples = kReferenceSamples;
+    int reference_samples = kReferenceSamples;  // rays per pixel of each reference round
+    double reference_repeat = 0.2;              // mean CIEDE2000 the two references may differ by
+    int max_reference_samples = 16 * kReferenceSamples;  // stop growing here (then the repeat may exceed it)
     int repeats = 3;
     std::uint64_t seed = 0;
     int threads = 0;
