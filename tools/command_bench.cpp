@@ -29,6 +29,7 @@ struct BenchArgs {
     int max_reference_samples = 16 * kReferenceSamples;
     int repeats = 3;
     int probes = 16;
+    std::vector<std::string> only;
     std::uint64_t seed = 0;
     std::string ocio_config;
     int threads = 0;
@@ -79,6 +80,11 @@ Status run(const BenchArgs& args)
     options.max_probes = args.probes;
     if (args.probes < 1 || args.probes > 64)
         return bad_input("--probes " + std::to_string(args.probes) + " is out of range (expected 1 to 64)");
+    if (!args.only.empty()) {
+        auto chosen = select_bench_configurations(options.configurations, args.only);
+        if (!chosen) return chosen.error();
+        options.configurations = std::move(*chosen);
+    }
     options.seed = args.seed;
     options.threads = args.threads;
     if (!args.quiet) options.note = [](const std::string& line) { std::cerr << "bench: " << line << "\n"; };
@@ -135,6 +141,10 @@ Command setup_bench(CLI::App& parent)
         ->capture_default_str();
     app->add_option("--probes", args->probes, "Noise drivers: probes along an anisotropic footprint (naive, gaussian)")
         ->capture_default_str();
+    app->add_option("--only", args->only,
+                    "Run only these configurations, by the CSV's labels, comma-separated "
+                    "(e.g. \"naive,gaussian 256x256 sqrt\"; default: all)")
+        ->delimiter(',');
     app->add_option("--seed", args->seed, "Seed of the sub-pixel samples")->capture_default_str();
     app->add_option("--ocio-config", args->ocio_config,
                     "OpenColorIO config (default: $OCIO if set, else the built-in config)");

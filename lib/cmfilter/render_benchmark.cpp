@@ -37,6 +37,20 @@ std::vector<BenchConfiguration> default_bench_configurations()
     return c;
 }
 
+Expected<std::vector<BenchConfiguration>> select_bench_configurations(const std::vector<BenchConfiguration>& all,
+                                                                      const std::vector<std::string>& labels)
+{
+    std::string known;
+    for (const BenchConfiguration& c : all) known += (known.empty() ? "'" : ", '") + c.label() + "'";
+    for (const std::string& label : labels)
+        if (std::none_of(all.begin(), all.end(), [&](const BenchConfiguration& c) { return c.label() == label; }))
+            return bad_input("configuration '" + label + "' is unknown (expected one of " + known + ")");
+    std::vector<BenchConfiguration> chosen;
+    for (const BenchConfiguration& c : all)
+        if (std::find(labels.begin(), labels.end(), c.label()) != labels.end()) chosen.push_back(c);
+    return chosen;
+}
+
 namespace {
 
 struct Bands {

@@ -43,6 +43,11 @@ struct BenchConfiguration {
 // 256 rays per pixel.
 std::vector<BenchConfiguration> default_bench_configurations();
 
+// The configurations of `all` whose labels are listed, in `all`'s order;
+// BadInput naming a label that is not there, and the labels that are.
+Expected<std::vector<BenchConfiguration>> select_bench_configurations(const std::vector<BenchConfiguration>& all,
+                                                                      const std::vector<std::string>& labels);
+
 struct BandedError {
     ErrorSummary all, near, middle, horizon;
 };
