@@ -112,7 +112,7 @@ Command setup_bench(CLI::App& parent)
         ->capture_default_str();
     app->add_option("--repeats", args->repeats, "Timed runs per configuration (the fastest counts)")
         ->capture_default_str();
-    app->add_option("--probes", args->probes, "Noise drivers: probes along an anisotropic footprint (naive, gaussian)")
+    app->add_option("--probes", args->probes, "Probes along an anisotropic footprint (naive, gaussian, exact)")
         ->capture_default_str();
     app->add_option("--seed", args->seed, "Seed of the sub-pixel samples")->capture_default_str();
     app->add_option("--ocio-config", args->ocio_config,
