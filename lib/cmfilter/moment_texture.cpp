@@ -60,4 +60,15 @@ MomentSample MomentTexture::lookup(float s, float t, float lod) const
     return finish(ok, m);
 }
 
+MomentSample MomentTexture::lookup(float s, float t, float dsdx, float dtdx, float dsdy,
+                                   float dtdy) const
+{
+    OIIO::TextureOpt opt;
+    opt.interpmode = OIIO::TextureOpt::InterpBilinear;
+    opt.mipmode = OIIO::TextureOpt::MipModeAniso;
+    float m[2] = {0, 0};
+    const bool ok = ts_->texture(OIIO::ustring(path_), opt, s, t, dsdx, dtdx, dsdy, dtdy, 2, m);
+    return finish(ok, m);
+}
+
 }  // namespace cmfilter

@@ -1,6 +1,6 @@
 // Reading a moment pyramid back and looking it up the way a renderer does:
 // through OpenImageIO's TextureSystem with bilinear interpolation inside a
-// level and trilinear blending across levels, never bicubic
+// level and trilinear (or anisotropic) blending across levels, never bicubic
 // (TextureSystem's default smart-bicubic has negative weights and can make
 // m2 < m1^2). A lookup returns the footprint's mean f = c + m1 and variance
 // sigma_f^2 = max(0, m2 - m1^2) (Heitz et al. 2013, sec. 4.2), ready for the
@@ -44,6 +44,11 @@ public:
     // power-of-two driver, lod = log2 of the footprint width in level-0
     // texels. lod is clamped to [0, reachable_levels() - 1]. Thread-safe.
     MomentSample lookup(float s, float t, float lod) const;
+
+    // Anisotropic lookup over the footprint spanned by the screen-space
+    // derivatives of (s, t), as TextureSystem::texture takes them, with
+    // bilinear probes. Thread-safe.
+    MomentSample lookup(float s, float t, float dsdx, float dtdx, float dsdy, float dtdy) const;
 
     // Levels TextureSystem can select: it sizes filters by the smaller side of
     // each level, so levels past the first whose smaller side is 1 texel are
