@@ -139,7 +139,7 @@ Command setup_bench(CLI::App& parent)
         ->capture_default_str();
     app->add_option("--repeats", args->repeats, "Timed runs per configuration (the fastest counts)")
         ->capture_default_str();
-    app->add_option("--probes", args->probes, "Noise drivers: probes along an anisotropic footprint (naive, gaussian)")
+    app->add_option("--probes", args->probes, "Probes along an anisotropic footprint (naive, gaussian, exact)")
         ->capture_default_str();
     app->add_option("--only", args->only,
                     "Run only these configurations, by the CSV's labels, comma-separated "

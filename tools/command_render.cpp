@@ -138,7 +138,7 @@ Command setup_render(CLI::App& parent)
     app->add_option("--footprint", args->footprint, "Width of an anisotropic footprint: rms, area, major or minor")
         ->capture_default_str();
     app->add_option("--probes", args->probes,
-                    "Noise drivers: filter an anisotropic footprint as up to N probes along its major edge")
+                    "Filter an anisotropic footprint as up to N probes along its major edge (naive, gaussian, exact)")
         ->capture_default_str();
     app->add_option("--aov", args->aov, "Also write PREFIX.mean.exr, PREFIX.sigma.exr and PREFIX.lod.exr");
     app->add_option("--ocio-config", args->ocio_config,

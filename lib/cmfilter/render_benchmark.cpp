@@ -27,6 +27,7 @@ std::vector<BenchConfiguration> default_bench_configurations()
 {
     std::vector<BenchConfiguration> c;
     c.push_back({RenderMethod::Naive, 1, 256, 256, SigmaSpacing::Sqrt, FootprintWidth::Rms});
+    c.push_back({RenderMethod::Exact, 1, 256, 256, SigmaSpacing::Sqrt, FootprintWidth::Rms});
     for (int n : {16, 64, 256})
         for (SigmaSpacing s : {SigmaSpacing::Sqrt, SigmaSpacing::Linear})
             c.push_back({RenderMethod::Gaussian, 1, n, n, s, FootprintWidth::Rms});
@@ -168,7 +169,18 @@ Expected<SceneBench> bench_scene(const Scene& scene, std::vector<SurfaceMaterial
     // The tables every surface holds now; re-baked when a configuration asks for others.
     using TableKey = std::tuple<int, int, SigmaSpacing>;
     std::optional<TableKey> baked;
+    const bool exact = exact_filterable(materials);
     for (const BenchConfiguration& c : options.configurations) {
+        if (c.method == RenderMethod::Exact) {
+            if (!exact) {
+                if (options.note) options.note(scene.path + ": exact: left out (not every driver is a texture with at most " + std::to_string(kHistogramMaxValues) + " values)");
+                continue;
+            }
+            MaterialOptions mo;
+            mo.threads = options.threads;
+            mo.note = options.note;
+            if (auto st = prepare_histograms(scene, materials, mo); !st) return st.error();
+        }
         BenchRow row;
         row.configuration = c;
         const TableKey key{c.table_values, c.table_sigmas, c.spacing};

@@ -37,10 +37,11 @@ struct BenchConfiguration {
     std::string label() const;        // e.g. "gaussian 64x64 sqrt", "gaussian 256x256 sqrt major", "supersample 16"
 };
 
-// naive; gaussian with 16 x 16, 64 x 64 and 256 x 256 tables, sqrt and linear
-// sigma spacing (rms footprint width), and the 256 x 256 sqrt table with the
-// area, major and minor footprint widths; supersample with 1, 4, 16, 64 and
-// 256 rays per pixel.
+// naive; exact (rms footprint width; only run on scenes it can filter);
+// gaussian with 16 x 16, 64 x 64 and 256 x 256 tables, sqrt and linear sigma
+// spacing (rms footprint width), and the 256 x 256 sqrt table with the area,
+// major and minor footprint widths; supersample with 1, 4, 16, 64 and 256
+// rays per pixel.
 std::vector<BenchConfiguration> default_bench_configurations();
 
 // The configurations of `all` whose labels are listed, in `all`'s order;
@@ -83,7 +84,11 @@ struct BenchOptions {
 };
 
 // `materials` are re-baked in place for each gaussian configuration (their
-// colour maps stay).
+// colour maps stay). An exact configuration runs only when every surface has
+// a texture driver with at most kHistogramMaxValues distinct values
+// (exact_filterable, scene_materials.h), and is left out of the rows
+// otherwise; the histogram pyramids it needs are baked into the materials
+// then, unless they hold them already.
 Expected<SceneBench> bench_scene(const Scene& scene, std::vector<SurfaceMaterial>& materials,
                                  const BenchOptions& options);
 
