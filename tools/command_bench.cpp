@@ -1,5 +1,6 @@
 // cmfilter bench: speed against accuracy on scenes (docs/render.md): every
-// method and configuration timed and compared with a 1024-ray reference,
+// method and configuration timed and compared with a reference (1024 rays
+// per pixel, more where two references with other seeds differ by > 0.2),
 // overall and per distance band; a CSV, and a log-log chart per scene.
 #include "command.h"
 
@@ -8,6 +9,7 @@
 #include "cmfilter/render_benchmark.h"
 #include "cmfilter/scene_loading.h"
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -23,8 +25,11 @@ struct BenchArgs {
     std::string charts;
     std::string resolution;
     int reference_samples = kReferenceSamples;
+    double reference_repeat = 0.2;
+    int max_reference_samples = 16 * kReferenceSamples;
     int repeats = 3;
     int probes = 16;
+    std::vector<std::string> only;
     std::uint64_t seed = 0;
     std::string ocio_config;
     int threads = 0;
@@ -51,6 +56,13 @@ Status run(const BenchArgs& args)
     if (args.reference_samples < kReferenceSamples || args.reference_samples > kMaxSamples)
         return bad_input("--reference-spp " + std::to_string(args.reference_samples) + " is out of range (expected " +
                          std::to_string(kReferenceSamples) + " to " + std::to_string(kMaxSamples) + ")");
+    if (!(args.reference_repeat >= 0) || !std::isfinite(args.reference_repeat))
+        return bad_input("--reference-repeat " + std::to_string(args.reference_repeat) +
+                         " is out of range (expected a finite mean CIEDE2000 >= 0)");
+    if (args.max_reference_samples < args.reference_samples || args.max_reference_samples > kMaxSamples)
+        return bad_input("--max-reference-spp " + std::to_string(args.max_reference_samples) +
+                         " is out of range (expected --reference-spp " + std::to_string(args.reference_samples) +
+                         " to " + std::to_string(kMaxSamples) + ")");
     std::optional<std::pair<int, int>> size;
     if (!args.resolution.empty()) {
         auto parsed = parse_size("--resolution", args.resolution);
@@ -62,10 +74,17 @@ Status run(const BenchArgs& args)
 
     BenchOptions options;
     options.reference_samples = args.reference_samples;
+    options.reference_repeat = args.reference_repeat;
+    options.max_reference_samples = args.max_reference_samples;
     options.repeats = args.repeats;
     options.max_probes = args.probes;
     if (args.probes < 1 || args.probes > 64)
         return bad_input("--probes " + std::to_string(args.probes) + " is out of range (expected 1 to 64)");
+    if (!args.only.empty()) {
+        auto chosen = select_bench_configurations(options.configurations, args.only);
+        if (!chosen) return chosen.error();
+        options.configurations = std::move(*chosen);
+    }
     options.seed = args.seed;
     options.threads = args.threads;
     if (!args.quiet) options.note = [](const std::string& line) { std::cerr << "bench: " << line << "\n"; };
@@ -108,12 +127,24 @@ Command setup_bench(CLI::App& parent)
     app->add_option("--csv", args->csv, "CSV to write: one row per scene and configuration")->required();
     app->add_option("--charts", args->charts, "Folder for one chart per scene (SCENE.png; needs gnuplot)");
     app->add_option("--resolution", args->resolution, "Render every scene at WxH instead of its own resolution");
-    app->add_option("--reference-spp", args->reference_samples, "Rays per pixel of the reference (>= 1024)")
+    app->add_option("--reference-spp", args->reference_samples,
+                    "Rays per pixel of each reference round (>= 1024)")
+        ->capture_default_str();
+    app->add_option("--reference-repeat", args->reference_repeat,
+                    "Mean CIEDE2000 two references with other seeds may differ by; both grow by --reference-spp "
+                    "rays per round until they do")
+        ->capture_default_str();
+    app->add_option("--max-reference-spp", args->max_reference_samples,
+                    "Stop growing the references at this many rays per pixel")
         ->capture_default_str();
     app->add_option("--repeats", args->repeats, "Timed runs per configuration (the fastest counts)")
         ->capture_default_str();
-    app->add_option("--probes", args->probes, "Noise drivers: probes along an anisotropic footprint (naive, gaussian)")
+    app->add_option("--probes", args->probes, "Probes along an anisotropic footprint (naive, gaussian, exact)")
         ->capture_default_str();
+    app->add_option("--only", args->only,
+                    "Run only these configurations, by the CSV's labels, comma-separated "
+                    "(e.g. \"naive,gaussian 256x256 sqrt\"; default: all)")
+        ->delimiter(',');
     app->add_option("--seed", args->seed, "Seed of the sub-pixel samples")->capture_default_str();
     app->add_option("--ocio-config", args->ocio_config,
                     "OpenColorIO config (default: $OCIO if set, else the built-in config)");

@@ -210,7 +210,7 @@ Command setup_render(CLI::App& parent)
     app->add_option("--footprint", args->footprint, "Width of an anisotropic footprint: rms, area, major or minor")
         ->capture_default_str();
     app->add_option("--probes", args->probes,
-                    "Noise drivers: filter an anisotropic footprint as up to N probes along its major edge")
+                    "Filter an anisotropic footprint as up to N probes along its major edge (naive, gaussian, exact)")
         ->capture_default_str();
     app->add_option("--tolerance", args->tolerance,
                     "Give every surface the smallest table whose lookup error (CIEDE2000, p99.9 against the exact "

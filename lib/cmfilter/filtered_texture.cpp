@@ -1,28 +1,29 @@
 #include "cmfilter/filtered_texture.h"
 
 #include "cmfilter/bilinear_texels.h"
+#include "cmfilter/texture_lod.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace cmfilter {
 
-Expected<FilteredTexture> FilteredTexture::create(MomentTexture moments, std::vector<float> level0,
+Expected<FilteredTexture> FilteredTexture::create(MomentTexture moments, std::optional<std::vector<float>> level0,
                                                   std::shared_ptr<const TemporaryFile> owned)
 {
     const MomentPyramidInfo& info = moments.info();
     const std::size_t texels = static_cast<std::size_t>(info.width) * static_cast<std::size_t>(info.height);
-    if (level0.size() != texels)
-        return bad_input("driver texture '" + moments.path() + "': " + std::to_string(level0.size()) +
+    if (level0 && level0->size() != texels)
+        return bad_input("driver texture '" + moments.path() + "': " + std::to_string(level0->size()) +
                          " level-0 texels for a " + std::to_string(info.width) + " x " +
                          std::to_string(info.height) + " pyramid (expected " + std::to_string(texels) + ")");
     FilteredTexture out(std::move(moments));
-    out.level0_ = std::make_shared<const std::vector<float>>(std::move(level0));
+    if (level0) out.level0_ = std::make_shared<const std::vector<float>>(std::move(*level0));
     out.owned_ = std::move(owned);
     return out;
 }
 
-MomentSample FilteredTexture::filter(double u, double v, double du_dx, double dv_dx, double du_dy,
-                                     double dv_dy) const
+MomentSample FilteredTexture::filter(double u, double v, double w) const
 {
     // A periodic texture is the same a whole number of repeats away: brought
     // into [0, 1) first, far coordinates keep their precision in float.
@@ -30,16 +31,25 @@ MomentSample FilteredTexture::filter(double u, double v, double du_dx, double dv
         u -= std::floor(u);
         v -= std::floor(v);
     }
-    return moments_.lookup(static_cast<float>(u), static_cast<float>(v), static_cast<float>(du_dx),
-                           static_cast<float>(dv_dx), static_cast<float>(du_dy), static_cast<float>(dv_dy));
+    const double lod = trilinear_lod_for_box(this->lod(w));
+    return moments_.lookup(static_cast<float>(u), static_cast<float>(v), static_cast<float>(lod));
 }
 
 double FilteredTexture::value(double u, double v) const
 {
+    if (!level0_) return moments_.reference();
     const std::vector<float>& f = *level0_;
     const int w = width();
     return bilinear_texels(u, v, w, height(), moments_.info().wrap, moments_.reference(),
                            [&](int x, int y) { return static_cast<double>(f[static_cast<std::size_t>(y) * w + x]); });
+}
+
+std::size_t FilteredTexture::distinct_values() const
+{
+    if (!level0_) return 0;
+    std::vector<float> values = *level0_;
+    std::sort(values.begin(), values.end());
+    return static_cast<std::size_t>(std::unique(values.begin(), values.end()) - values.begin());
 }
 
 double FilteredTexture::lod(double w) const { return std::log2(w * width()); }

@@ -7,6 +7,7 @@
 #include "cmfilter/parallel_for.h"
 #include "cmfilter/stopwatch.h"
 #include "cmfilter/surface_hit.h"
+#include "cmfilter/texture_footprint.h"
 
 #include <algorithm>
 #include <atomic>
@@ -76,10 +77,8 @@ void sample_positions(int count, std::uint64_t seed, std::uint64_t index, std::v
     }
 }
 
-// The driver over the centre ray's footprint: its mean and sigma (sec. 4.2)
-// and the footprint's LOD. A noise takes one width for the footprint
-// (footprint_width.h); a texture's moment pyramid takes the anisotropic
-// footprint itself, and the width only names its LOD in level-0 texels.
+// A noise driver over the centre ray's footprint, as one width
+// (footprint_width.h): its mean and sigma (sec. 4.2) and the footprint's LOD.
 struct FilteredDriver {
     double mean = 0, sigma = 0, lod = 0;
 };
@@ -87,33 +86,40 @@ struct FilteredDriver {
 FilteredDriver filter_driver(const SurfaceMaterial& m, const SurfaceHit& h, FootprintWidth choice)
 {
     const double w = footprint_width(choice, h.du_dx, h.dv_dx, h.du_dy, h.dv_dy);
-    if (m.texture) {
-        const MomentSample f = m.texture->filter(h.u, h.v, h.du_dx, h.dv_dx, h.du_dy, h.dv_dy);
-        return {f.mean, f.sigma, m.texture->lod(w)};
-    }
     const FilteredNoise::Parameters f = m.noise->filter(h.u, h.v, w);
     return {f.mean, f.sigma, m.noise->lod(w)};
 }
 
-// The exact method's albedo, sum_b h_b C0(v_b) (sec. 4.1): the histogram of
-// the texture over an isotropic footprint at the LOD of its width (in
-// level-0 texels; below 0, level 0), `colors` holding C0(v_b).
-Rgb exact_albedo(const SurfaceMaterial& m, const SurfaceHit& h, double lod, const std::vector<Rgb>& colors,
-                  std::vector<float>& weights)
+// What a texture driver's probes colour for a method (texture_footprint.h):
+// supersampled pixels take only the AOVs from them.
+TextureColour texture_colour(RenderMethod method)
 {
-    weights.resize(colors.size());
-    const float level = std::isfinite(lod) ? static_cast<float>(std::max(0.0, lod)) : 0.0f;
-    // A failed lookup leaves zero weights (black), as apply's exact method.
-    m.histograms->lookup(static_cast<float>(h.u), static_cast<float>(h.v), level, weights.data());
-    Rgb albedo;
-    for (std::size_t b = 0; b < colors.size(); ++b) albedo += static_cast<double>(weights[b]) * colors[b];
-    return albedo;
+    switch (method) {
+    case RenderMethod::Naive: return TextureColour::Naive;
+    case RenderMethod::Gaussian: return TextureColour::Gaussian;
+    case RenderMethod::Exact: return TextureColour::Exact;
+    default: return TextureColour::None;
+    }
 }
 
 // The driver at a point, for the supersampled methods.
 double driver_value(const SurfaceMaterial& m, double u, double v)
 {
     return m.texture ? m.texture->value(u, v) : m.noise->noise()(u, v);
+}
+
+// The supersampled methods read f at each ray's hit from a texture's level
+// 0, which a moments driver whose recorded driver is gone lacks.
+Status check_level0(const std::vector<SurfaceMaterial>& materials, RenderMethod method)
+{
+    if (method != RenderMethod::Supersample && method != RenderMethod::Reference) return ok();
+    for (const SurfaceMaterial& m : materials)
+        if (m.texture && !m.texture->has_level0())
+            return io_error(m.missing_driver + "; " + to_string(method) +
+                            " reads the driver's texels at each ray's hit (naive and gaussian need only the "
+                            "moments): re-bake the moments from the driver where it is now, or name the driver "
+                            "itself with driver/image");
+    return ok();
 }
 
 }  // namespace
@@ -129,6 +135,7 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
                          std::to_string(kMaxSamples) + ")");
     for (const SurfaceMaterial& m : materials)
         if (!m.noise && !m.texture) return bad_input("render: every surface needs a driver (a noise or a texture)");
+    if (auto st = check_level0(materials, options.method); !st) return st.error();
     // The exact method: C0 at each material's distinct driver values.
     std::vector<std::vector<Rgb>> bin_colors(materials.size());
     if (options.method == RenderMethod::Exact)
@@ -182,7 +189,17 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
                 const SurfaceMaterial& m = materials[static_cast<std::size_t>(hit->surface)];
                 image.hit[p] = 1;
                 image.distance[p] = static_cast<float>(h.t);
-                if (m.noise && options.max_probes > 1) {
+                if (m.texture) {
+                    const TextureFootprint f = filter_texture_footprint(
+                        m, h, texture_colour(options.method), options.footprint, options.max_probes,
+                        bin_colors[static_cast<std::size_t>(hit->surface)], weights);
+                    image.mean[p] = static_cast<float>(f.mean);
+                    image.sigma[p] = static_cast<float>(f.sigma);
+                    image.lod[p] = static_cast<float>(f.lod);
+                    counts.footprints += f.counts.footprints;
+                    counts.plain += f.counts.plain;
+                    if (!supersampled) colour = shade(f.albedo, h.normal, scene.light);
+                } else if (m.noise && options.max_probes > 1) {
                     // A noise over an anisotropic footprint: probes along its
                     // major edge (anisotropic_probes.h), colours averaged.
                     const FootprintProbes probes = footprint_probes(h.du_dx, h.dv_dx, h.du_dy, h.dv_dy,
@@ -212,10 +229,6 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
                         colour = shade(m.map.evaluate(f.mean), h.normal, scene.light);
                     else if (options.method == RenderMethod::Gaussian)
                         colour = shade(gaussian_albedo(m, f.mean, f.sigma, counts), h.normal, scene.light);
-                    else if (options.method == RenderMethod::Exact)
-                        colour = shade(exact_albedo(m, h, f.lod, bin_colors[static_cast<std::size_t>(hit->surface)],
-                                                    weights),
-                                       h.normal, scene.light);
                 }
             }
             if (supersampled) {

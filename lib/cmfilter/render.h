@@ -8,11 +8,10 @@
 //                moment pyramid (sec. 4.2);
 //   exact        the same ray; sum_b h_b C0(v_b) (sec. 4.1) for a texture
 //                driver with at most 256 distinct values v_b, the weights h_b
-//                from its histogram pyramid (histogram_pyramid.h) at (u, v),
-//                isotropic at the LOD of the footprint width (log2 of the
-//                width in level-0 texels, clamped to the pyramid's levels):
-//                exact for a box footprint one texel-aligned level wide, not
-//                for an anisotropic one; materials need their histograms
+//                from its histogram pyramid (histogram_pyramid.h), averaged
+//                over the footprint's probes (texture_footprint.h): exact for
+//                a footprint made of squares aligned with a pyramid level;
+//                materials need their histograms
 //                (MaterialOptions::histograms), and noise drivers are refused;
 //   supersample  N rays per pixel (a jittered N = n x n grid when N is a
 //                square, else N rooks: one sample per row and column of an
@@ -21,10 +20,12 @@
 //                own; misses count as background;
 //   reference    supersample with at least 1024 rays (the paper's 32 x 32).
 // The footprint is the parallelogram of the ray differentials in texture
-// space (surface_hit.h): a noise reduces it to one width (footprint_width.h),
-// a texture's moments are looked up over the parallelogram itself
-// (TextureSystem's anisotropic filter, filtered_texture.h), and the width
-// gives only its LOD AOV, log2 of the width in level-0 texels.
+// space (surface_hit.h), cut along its major edge into up to max_probes
+// pieces (anisotropic_probes.h), each reduced to one width
+// (footprint_width.h): a noise filters each piece at that width, a texture
+// looks its pyramids up isotropically at the width's LOD, log2 of the width
+// in level-0 texels (texture_footprint.h). A pixel's colour is the mean of
+// its probes' colours.
 // Shading: Lambertian, albedo x (radiance max(0, <n, l>) + ambient).
 // Deterministic for a given seed, whatever the thread count.
 #pragma once
@@ -55,10 +56,10 @@ struct RenderOptions {
     std::uint64_t seed = 0;
     int threads = 0;   // 0: all cores
     FootprintWidth footprint = FootprintWidth::Rms;
-    // Noise drivers: filter an anisotropic footprint as up to this many probes
-    // along its major edge (anisotropic_probes.h); 1: one footprint. 16
-    // by default: on the bundled ground planes the error stops falling there
-    // (docs/render.md).
+    // Naive, gaussian and exact: filter an anisotropic footprint as up to
+    // this many probes along its major edge (anisotropic_probes.h; textures:
+    // texture_footprint.h); 1: one footprint. 16 by default: on the bundled
+    // ground planes the error stops falling there (docs/render.md).
     int max_probes = 16;
     std::function<void(double)> progress;  // fraction of rows done, may be empty
 };
@@ -81,7 +82,9 @@ struct RenderedImage {
 
 // BadInput for a sample count outside 1 .. kMaxSamples, a material count
 // that does not match the scene, a material without a driver, or, for the
-// exact method, a noise driver or a texture without its histogram pyramid.
+// exact method, a noise driver or a texture without its histogram pyramid;
+// Io for supersample or reference on a texture without its level 0 (a
+// moments driver whose recorded driver is gone, naming it).
 Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMaterial>& materials,
                                const RenderOptions& options);
 

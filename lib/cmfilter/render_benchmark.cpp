@@ -4,9 +4,11 @@
 #include "cmfilter/tolerance_tables.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <optional>
 #include <tuple>
+#include <utility>
 #include <sstream>
 
 namespace cmfilter {
@@ -40,6 +42,7 @@ std::vector<BenchConfiguration> default_bench_configurations()
 {
     std::vector<BenchConfiguration> c;
     c.push_back({RenderMethod::Naive, 1, 256, 256, SigmaSpacing::Sqrt, FootprintWidth::Rms});
+    c.push_back({RenderMethod::Exact, 1, 256, 256, SigmaSpacing::Sqrt, FootprintWidth::Rms});
     for (int n : {16, 64, 256})
         for (SigmaSpacing s : {SigmaSpacing::Sqrt, SigmaSpacing::Linear})
             c.push_back({RenderMethod::Gaussian, 1, n, n, s, FootprintWidth::Rms});
@@ -61,6 +64,20 @@ std::vector<BenchConfiguration> default_bench_configurations()
     for (int spp : {1, 4, 16, 64, 256})
         c.push_back({RenderMethod::Supersample, spp, 256, 256, SigmaSpacing::Sqrt, FootprintWidth::Rms});
     return c;
+}
+
+Expected<std::vector<BenchConfiguration>> select_bench_configurations(const std::vector<BenchConfiguration>& all,
+                                                                      const std::vector<std::string>& labels)
+{
+    std::string known;
+    for (const BenchConfiguration& c : all) known += (known.empty() ? "'" : ", '") + c.label() + "'";
+    for (const std::string& label : labels)
+        if (std::none_of(all.begin(), all.end(), [&](const BenchConfiguration& c) { return c.label() == label; }))
+            return bad_input("configuration '" + label + "' is unknown (expected one of " + known + ")");
+    std::vector<BenchConfiguration> chosen;
+    for (const BenchConfiguration& c : all)
+        if (std::find(labels.begin(), labels.end(), c.label()) != labels.end()) chosen.push_back(c);
+    return chosen;
 }
 
 namespace {
@@ -97,42 +114,101 @@ BandedError compare(const RenderedImage& reference, const RenderedImage& image, 
     return {summarize_errors(all), summarize_errors(near), summarize_errors(middle), summarize_errors(horizon)};
 }
 
+// Adds `round` into `sum`, which already holds `rounds` renders: the running
+// mean of the renders' colours, their rays and their time.
+void average_in(RenderedImage& sum, const RenderedImage& round, int rounds)
+{
+    const float w = 1.0f / static_cast<float>(rounds + 1);
+    for (std::size_t i = 0; i < sum.rgb.size(); ++i) sum.rgb[i] += w * (round.rgb[i] - sum.rgb[i]);
+    sum.samples += round.samples;
+    sum.seconds += round.seconds;
+}
+
+// The reference and a second, independent one, grown round by round until
+// they differ by at most options.reference_repeat (BenchOptions). Round 0
+// renders the two with seeds s and s + 1, round k >= 1 with s + 2k + 1 and
+// s + 2k + 2: never s + 2, the configurations' seed.
+Expected<std::pair<RenderedImage, RenderedImage>> repeatable_references(
+    const Scene& scene, const std::vector<SurfaceMaterial>& materials, const BenchOptions& options)
+{
+    RenderOptions ro;
+    ro.method = RenderMethod::Reference;
+    ro.samples = options.reference_samples;
+    ro.threads = options.threads;
+    std::optional<RenderedImage> first, second;
+    for (int round = 0;; ++round) {
+        ro.seed = options.seed + (round == 0 ? 0 : 2 * round + 1);
+        auto a = render(scene, materials, ro);
+        if (!a) return a.error();
+        ro.seed = options.seed + (round == 0 ? 1 : 2 * round + 2);
+        auto b = render(scene, materials, ro);
+        if (!b) return b.error();
+        const int round_samples = a->samples;
+        if (round == 0) {
+            first = std::move(*a);
+            second = std::move(*b);
+        } else {
+            average_in(*first, *a, round);
+            average_in(*second, *b, round);
+        }
+        if (first->samples + round_samples > options.max_reference_samples) break;
+        if (compare(*first, *second, distance_bands(*first)).all.mean <= options.reference_repeat) break;
+        if (options.note)
+            options.note(scene.path + ": the references differ by more than " + std::to_string(options.reference_repeat) +
+                         " mean dE00 at " + std::to_string(first->samples) + " rays per pixel; adding " +
+                         std::to_string(round_samples));
+    }
+    return std::make_pair(std::move(*first), std::move(*second));
+}
+
 }  // namespace
 
 Expected<SceneBench> bench_scene(const Scene& scene, std::vector<SurfaceMaterial>& materials,
                                  const BenchOptions& options)
 {
     if (options.repeats < 1) return bad_input("bench: repeats must be >= 1, got " + std::to_string(options.repeats));
+    if (!(options.reference_repeat >= 0) || !std::isfinite(options.reference_repeat))
+        return bad_input("bench: the reference repeat tolerance must be finite and >= 0, got " +
+                         std::to_string(options.reference_repeat));
+    if (options.max_reference_samples < options.reference_samples)
+        return bad_input("bench: the most reference rays (" + std::to_string(options.max_reference_samples) +
+                         ") are fewer than one round's (" + std::to_string(options.reference_samples) + ")");
     SceneBench bench;
     bench.scene = scene.path;
 
-    RenderOptions ro;
-    ro.method = RenderMethod::Reference;
-    ro.samples = options.reference_samples;
-    ro.seed = options.seed;
-    ro.threads = options.threads;
-    auto reference = render(scene, materials, ro);
-    if (!reference) return reference.error();
-    ro.seed = options.seed + 1;
-    auto second = render(scene, materials, ro);
-    if (!second) return second.error();
-    const Bands bands = distance_bands(*reference);
-    bench.width = reference->width;
-    bench.height = reference->height;
-    for (unsigned char h : reference->hit) bench.pixels_hit += h;
+    auto references = repeatable_references(scene, materials, options);
+    if (!references) return references.error();
+    const RenderedImage& reference = references->first;
+    const RenderedImage& second = references->second;
+    const Bands bands = distance_bands(reference);
+    bench.width = reference.width;
+    bench.height = reference.height;
+    for (unsigned char h : reference.hit) bench.pixels_hit += h;
     bench.near_distance = bands.near;
     bench.horizon_distance = bands.horizon;
-    bench.reference_seconds = std::min(reference->seconds, second->seconds);
-    bench.reference_samples = reference->samples;
-    bench.reference_repeatability = compare(*reference, *second, bands);
+    bench.reference_seconds = reference.seconds;
+    bench.reference_samples = reference.samples;
+    bench.reference_repeatability = compare(reference, second, bands);
     if (options.note)
-        options.note(scene.path + ": reference (" + std::to_string(reference->samples) + " rays per pixel) in " +
-                     std::to_string(bench.reference_seconds) + " s");
+        options.note(scene.path + ": reference (" + std::to_string(reference.samples) + " rays per pixel) in " +
+                     std::to_string(bench.reference_seconds) + " s, repeatable to " +
+                     std::to_string(bench.reference_repeatability.all.mean) + " mean dE00");
 
     // The tables every surface holds now; re-baked (or fitted) when a configuration asks for others.
     using TableKey = std::tuple<int, int, SigmaSpacing, double, double>;
     std::optional<TableKey> baked;
+    const bool exact = exact_filterable(materials);
     for (const BenchConfiguration& c : options.configurations) {
+        if (c.method == RenderMethod::Exact) {
+            if (!exact) {
+                if (options.note) options.note(scene.path + ": exact: left out (not every driver is a texture with at most " + std::to_string(kHistogramMaxValues) + " values)");
+                continue;
+            }
+            MaterialOptions mo;
+            mo.threads = options.threads;
+            mo.note = options.note;
+            if (auto st = prepare_histograms(scene, materials, mo); !st) return st.error();
+        }
         BenchRow row;
         row.configuration = c;
         const TableKey key{c.table_values, c.table_sigmas, c.spacing, c.tolerance, c.shortcut};
@@ -186,7 +262,7 @@ Expected<SceneBench> bench_scene(const Scene& scene, std::vector<SurfaceMaterial
         }
         row.footprints = image->footprints;
         row.plain_footprints = image->plain_footprints;
-        row.error = compare(*reference, *image, bands);
+        row.error = compare(reference, *image, bands);
         if (options.note)
             options.note(scene.path + ": " + c.label() + ": " + std::to_string(row.seconds) + " s, mean dE00 " +
                          std::to_string(row.error.all.mean));

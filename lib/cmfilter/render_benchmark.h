@@ -4,8 +4,14 @@
 // reference of `reference_samples` rays per pixel, over the pixels whose
 // centre ray hits a surface, and per distance band: the hit pixels split in
 // three equal-count bands by the centre ray's distance (near, middle,
-// horizon). A second reference with another seed measures how repeatable the
-// reference itself is (the issue asks for <= 0.2 mean CIEDE2000).
+// horizon). A second reference with other seeds measures how repeatable the
+// reference itself is: the two must differ by at most `reference_repeat`
+// mean CIEDE2000 (0.2). Where a scene's driver is too fine for that at
+// `reference_samples` rays (a noise far below the pixel), both references
+// grow until it holds: each round renders both once more with fresh seeds and
+// averages it in, so the rays per pixel go N, 2N, 3N, ... up to
+// `max_reference_samples`: the fewest rays that make the reference as
+// repeatable as asked (the rows then say how many it took).
 #pragma once
 
 #include "cmfilter/error.h"
@@ -39,14 +45,20 @@ struct BenchConfiguration {
     std::string label() const;
 };
 
-// naive; gaussian with 16 x 16, 64 x 64 and 256 x 256 tables, sqrt and linear
-// sigma spacing (rms footprint width), and the 256 x 256 sqrt table with the
-// area, major and minor footprint widths; gaussian with tables fitted to
-// tolerances 1 and 0.5, with the small-sigma shortcut at its default bound (a
-// tenth of the tolerance), tolerance 1 without the shortcut, and the 256 x 256
-// sqrt table with the shortcut at bound 0.1; supersample with 1, 4, 16, 64 and
-// 256 rays per pixel.
+// naive; exact (rms footprint width; only run on scenes it can filter);
+// gaussian with 16 x 16, 64 x 64 and 256 x 256 tables, sqrt and linear sigma
+// spacing (rms footprint width), and the 256 x 256 sqrt table with the area,
+// major and minor footprint widths; gaussian with tables fitted to tolerances
+// 1 and 0.5, with the small-sigma shortcut at its default bound (a tenth of
+// the tolerance), tolerance 1 without the shortcut, and the 256 x 256 sqrt
+// table with the shortcut at bound 0.1; supersample with 1, 4, 16, 64 and 256
+// rays per pixel.
 std::vector<BenchConfiguration> default_bench_configurations();
+
+// The configurations of `all` whose labels are listed, in `all`'s order;
+// BadInput naming a label that is not there, and the labels that are.
+Expected<std::vector<BenchConfiguration>> select_bench_configurations(const std::vector<BenchConfiguration>& all,
+                                                                      const std::vector<std::string>& labels);
 
 struct BandedError {
     ErrorSummary all, near, middle, horizon;
@@ -70,15 +82,17 @@ struct SceneBench {
     int width = 0, height = 0;
     std::size_t pixels_hit = 0;
     double near_distance = 0, horizon_distance = 0;  // band limits: the hit distances' terciles
-    double reference_seconds = 0;
-    int reference_samples = 0;
-    BandedError reference_repeatability;  // reference (seed) against reference (seed + 1)
+    double reference_seconds = 0;  // the reference's rounds together
+    int reference_samples = 0;     // rays per pixel of the reference, all rounds together
+    BandedError reference_repeatability;  // the reference against the second one (other seeds)
     std::vector<BenchRow> rows;
 };
 
 struct BenchOptions {
     std::vector<BenchConfiguration> configurations = default_bench_configurations();
-    int reference_samples = kReferenceSamples;
+    int reference_samples = kReferenceSamples;  // rays per pixel of each reference round
+    double reference_repeat = 0.2;              // mean CIEDE2000 the two references may differ by
+    int max_reference_samples = 16 * kReferenceSamples;  // stop growing here (then the repeat may exceed it)
     int repeats = 3;
     std::uint64_t seed = 0;
     int threads = 0;
@@ -87,7 +101,12 @@ struct BenchOptions {
 };
 
 // `materials` are re-baked in place for each gaussian configuration (their
-// colour maps stay), or fitted to its tolerance (choose_surface_tables).
+// colour maps stay), or fitted to its tolerance (choose_surface_tables). An
+// exact configuration runs only when every surface has a texture driver with
+// at most kHistogramMaxValues distinct values (exact_filterable,
+// scene_materials.h), and is left out of the rows otherwise; the histogram
+// pyramids it needs are baked into the materials then, unless they hold them
+// already.
 Expected<SceneBench> bench_scene(const Scene& scene, std::vector<SurfaceMaterial>& materials,
                                  const BenchOptions& options);
 

@@ -131,11 +131,17 @@ Status load_moments_driver(const Scene& scene, std::size_t i, const MaterialOpti
     const MomentPyramidInfo& info = moments->info();
     if (auto st = check_domain(scene, i, m, info.driver_min, info.driver_max, "min and max"); !st) return st;
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(info.source, ec))
-        return io_error(prefix + "cannot read driver '" + info.source + "' recorded in '" + path +
-                        "' (cmfilter:source): no such file; the renderer reads the driver's texels beside its "
-                        "moments: re-bake the moments from the driver where it is now, or name the driver "
-                        "itself with driver/image");
+    if (!std::filesystem::is_regular_file(info.source, ec)) {
+        // The pyramid alone serves naive and gaussian; what needs level 0
+        // refuses the material with this (render, load_histograms).
+        m.driver_path = info.source;
+        m.missing_driver = prefix + "cannot read driver '" + info.source + "' recorded in '" + path +
+                           "' (cmfilter:source): no such file";
+        auto texture = FilteredTexture::create(std::move(*moments), std::nullopt);
+        if (!texture) return located(texture.error(), prefix);
+        m.texture.emplace(std::move(*texture));
+        return ok();
+    }
     auto source = read_moment_source(info.source, path, info, options.threads);
     if (!source) return located(source.error(), prefix);
     if (!is_moment_source(*source, info))
@@ -188,6 +194,9 @@ Status load_histograms(const Scene& scene, std::size_t i, const MaterialOptions&
     const DriverSource& driver = scene.surfaces[i].material.driver;
     const std::string prefix =
         where(scene, i, driver.kind == DriverKind::Moments ? "driver/moments" : "driver/image");
+    if (!m.missing_driver.empty())
+        return io_error(m.missing_driver + "; exact bakes its histograms from the driver's texels: re-bake the "
+                        "moments from the driver where it is now, or name the driver itself with driver/image");
     const MomentPyramidInfo& moments = m.texture->moments().info();
     HistogramBakeOptions bake;
     bake.driver_path = m.driver_path;
@@ -219,6 +228,14 @@ Status load_driver(const Scene& scene, std::size_t i, const MaterialOptions& opt
     return runtime_error(where(scene, i, "driver") + "unknown driver kind");
 }
 
+Status refuse_noise_for_exact(const Scene& scene, std::size_t i)
+{
+    if (scene.surfaces[i].material.driver.kind != DriverKind::Noise) return ok();
+    return bad_input(where(scene, i, "driver") + "exact needs a texture driver with at most " +
+                     std::to_string(kHistogramMaxValues) +
+                     " distinct values; noise drivers have no exact filtering distribution");
+}
+
 }  // namespace
 
 Expected<std::vector<SurfaceMaterial>> prepare_materials(const Scene& scene, const ColorConfig& config,
@@ -227,10 +244,8 @@ Expected<std::vector<SurfaceMaterial>> prepare_materials(const Scene& scene, con
     std::vector<SurfaceMaterial> materials(scene.surfaces.size());
     for (std::size_t i = 0; i < scene.surfaces.size(); ++i) {
         if (auto st = load_colormap(scene, i, config, options, materials[i]); !st) return st.error();
-        if (options.histograms && scene.surfaces[i].material.driver.kind == DriverKind::Noise)
-            return bad_input(where(scene, i, "driver") +
-                             "exact needs a texture driver with at most " + std::to_string(kHistogramMaxValues) +
-                             " distinct values; noise drivers have no exact filtering distribution");
+        if (options.histograms)
+            if (auto st = refuse_noise_for_exact(scene, i); !st) return st.error();
         if (auto st = load_driver(scene, i, options, materials[i]); !st) return st.error();
         if (options.histograms)
             if (auto st = load_histograms(scene, i, options, materials[i]); !st) return st.error();
@@ -239,6 +254,28 @@ Expected<std::vector<SurfaceMaterial>> prepare_materials(const Scene& scene, con
         if (auto st = choose_surface_table(scene, i, materials[i], tables); !st) return st.error();
     }
     return materials;
+}
+
+bool exact_filterable(const std::vector<SurfaceMaterial>& materials)
+{
+    for (const SurfaceMaterial& m : materials)
+        if (!m.texture || !m.texture->has_level0() ||
+            m.texture->distinct_values() > static_cast<std::size_t>(kHistogramMaxValues))
+            return false;
+    return true;
+}
+
+Status prepare_histograms(const Scene& scene, std::vector<SurfaceMaterial>& materials, const MaterialOptions& options)
+{
+    if (materials.size() != scene.surfaces.size())
+        return bad_input("histograms: " + std::to_string(materials.size()) + " materials for " +
+                         std::to_string(scene.surfaces.size()) + " surfaces");
+    for (std::size_t i = 0; i < materials.size(); ++i) {
+        if (materials[i].histograms) continue;
+        if (auto st = refuse_noise_for_exact(scene, i); !st) return st;
+        if (auto st = load_histograms(scene, i, options, materials[i]); !st) return st;
+    }
+    return ok();
 }
 
 }  // namespace cmfilter

@@ -8,9 +8,13 @@
 // seconds per noise). A texture driver (filtered_texture.h) is a moment
 // pyramid and its level-0 driver: a `moments` file brings the driver back
 // from its cmfilter:source, which must still be the file it was baked from
-// (SHA-256, as apply checks it); an `image` is read once and its moment
-// pyramid baked in process (bake-moments' defaults but periodic wrap: scene
-// textures repeat) into a temporary file that lives as long as the material.
+// (SHA-256, as apply checks it); when that file is gone the pyramid alone
+// serves naive and gaussian, and SurfaceMaterial::missing_driver says so to
+// the methods that need level 0 (render refuses supersample and reference,
+// and the histograms of exact are refused here). An `image` is read once and
+// its moment pyramid baked in process (bake-moments' defaults but periodic
+// wrap: scene textures repeat) into a temporary file that lives as long as
+// the material.
 // For `render --method exact` (MaterialOptions::histograms) a texture driver
 // also gets its histogram pyramid (histogram_pyramid.h), baked in process
 // from the same level-0 driver with the same wrap into a temporary file of
@@ -48,7 +52,10 @@ struct SurfaceMaterial {
     std::optional<FilteredNoise> noise;     // a procedural driver, or
     std::optional<FilteredTexture> texture; // a texture driver: exactly one is set
     std::string map_path, table_path;   // provenance (empty table_path: baked here)
-    std::string driver_path;            // texture: the level-0 driver image read
+    std::string driver_path;            // texture: the level-0 driver image read (or recorded, when gone)
+    // A moments driver whose recorded driver is gone (no level 0): the error
+    // naming the surface, the driver and the moments file; empty otherwise.
+    std::string missing_driver;
     bool sigma_table_baked = false;     // the noise's sigma table was baked here
     bool moments_baked = false;         // the texture's moment pyramid was baked here
     // Texture drivers with MaterialOptions::histograms: the histogram pyramid
@@ -75,10 +82,22 @@ struct MaterialOptions {
 // choose_surface_table (a surface fitted to a tolerance skips the default bake). Errors name the surface's
 // key (/surfaces/i/material/...) and the file: unreadable tables, maps,
 // moment pyramids or driver images, a sigma table baked for another noise, a
-// moments file whose recorded driver is gone (Io) or changed (BadInput), or
+// moments file whose recorded driver changed (BadInput), or is gone when
+// histograms are asked for (Io), or
 // a clamp colour map whose domain misses the driver's values entirely (noise:
 // mean +- 3 sigma; texture: its min and max).
 Expected<std::vector<SurfaceMaterial>> prepare_materials(const Scene& scene, const ColorConfig& config,
                                                          const MaterialOptions& options);
+
+// Whether `render --method exact` can filter these materials: every one has
+// a texture driver with its level 0 and at most kHistogramMaxValues distinct
+// values.
+bool exact_filterable(const std::vector<SurfaceMaterial>& materials);
+
+// Bakes the histogram pyramid of every material that lacks one, as
+// prepare_materials does with MaterialOptions::histograms (and with its
+// errors), for materials prepared without.
+Status prepare_histograms(const Scene& scene, std::vector<SurfaceMaterial>& materials,
+                          const MaterialOptions& options);
 
 }  // namespace cmfilter

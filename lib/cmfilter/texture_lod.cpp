@@ -63,4 +63,9 @@ TextureLod texture_lod(int width, int height, int levels, float lod)
     return out;
 }
 
+double trilinear_lod_for_box(double box_lod)
+{
+    return box_lod - 0.5 * std::log2(3.0);
+}
+
 }  // namespace cmfilter

@@ -39,4 +39,16 @@ struct TextureLod {
 
 TextureLod texture_lod(int width, int height, int levels, float lod);
 
+// The trilinear lookup LOD that stands for a square box footprint of LOD
+// `box_lod` (log2 of its width w in level-0 texels). A lookup at level k
+// reads texels that are box means over 2^k texels and interpolates them
+// bilinearly: its kernel along each axis is a box of width 2^k convolved with
+// a tent of half-width 2^k, of variance 4^k / 12 + 4^k / 6 = 4^k / 4, three
+// times that of the box, w^2 / 12. Matching the two, 4^k / 4 = w^2 / 12,
+// gives k = log2(w / sqrt(3)): box_lod - log2(sqrt(3)) (as the rms footprint
+// width matches variances, footprint_width.h). A box centred on a texel of
+// level k + 1 reads that texel whatever the blend of levels k and k + 1: its
+// bilinear weights at level k are the four texels it covers, 1/4 each.
+double trilinear_lod_for_box(double box_lod);
+
 }  // namespace cmfilter

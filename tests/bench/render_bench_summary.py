@@ -1,6 +1,7 @@
 """Summary of a `cmfilter bench` CSV against the render targets (docs/render.md):
 gaussian (256x256 sqrt table, rms footprint) against naive, the supersample of
-about gaussian's time, and the reference.
+about gaussian's time, and the reference; and exact against gaussian on the
+scenes that have it.
     python3 render_bench_summary.py render-bench.csv"""
 import math
 import os
@@ -33,3 +34,17 @@ for s in scenes:
         f(n, "mean"), f(n, "mean") / f(g, "mean"), f(g, "seconds") / f(n, "seconds"),
         near["spp"], f(near, "mean"), f(near, "seconds") / f(g, "seconds"), f(near, "mean") / f(g, "mean"),
         f(ref, "seconds") / f(g, "seconds"), f(rep, "mean")))
+
+# exact, on the scenes it can filter (every driver a texture with at most 256
+# values; bench leaves it out elsewhere).
+exact = [s for s in scenes if any(r["scene"] == s and r["method"] == "exact" for r in rows)]
+if exact:
+    print()
+    print("| scene | exact mean (near / middle / horizon) | gaussian mean | exact / gaussian time |")
+    print("|---|---|---:|---:|")
+    for s in exact:
+        e = pick(s, "exact")
+        g = pick(s, "gaussian 256x256 sqrt")
+        print("| %s | %.2f (%.2f / %.2f / %.2f) | %.2f | %.2f |" % (
+            os.path.basename(s), f(e, "mean"), f(e, "near_mean"), f(e, "middle_mean"), f(e, "horizon_mean"),
+            f(g, "mean"), f(e, "seconds") / f(g, "seconds")))

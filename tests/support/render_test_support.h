@@ -1,12 +1,16 @@
 // Helpers for the renderer's unit tests: printing a Vec3 in doctest messages,
-// finiteness, angles, central differences, a scene camera, and the CIEDE2000
-// difference of two renders.
+// finiteness, angles, central differences, a scene camera, a terrain fBm
+// material, and the CIEDE2000 difference of two renders.
 #pragma once
 
 #include "cmfilter/ciede2000.h"
+#include "cmfilter/color_config.h"
+#include "cmfilter/color_map_loading.h"
 #include "cmfilter/error_summary.h"
+#include "cmfilter/noise_spec.h"
 #include "cmfilter/render.h"
 #include "cmfilter/scene.h"
+#include "cmfilter/scene_materials.h"
 #include "cmfilter/vec3.h"
 
 #include <doctest/doctest.h>
@@ -14,6 +18,7 @@
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+#include <string>
 #include <vector>
 
 namespace doctest {
@@ -59,6 +64,37 @@ inline cmfilter::SceneCamera make_scene_camera(const cmfilter::Vec3& position, c
     c.width = width;
     c.height = height;
     return c;
+}
+
+// The bundled scenes' material: the terrain map over [-0.68, 0.68] driven by
+// a 6-octave gradient fBm, with a 16 x 16 table and a placeholder sigma table
+// (0.1 at every LOD: for tests that do not judge gaussian's colours).
+inline cmfilter::SurfaceMaterial terrain_fbm_material()
+{
+    auto config = cmfilter::ColorConfig::load("");
+    REQUIRE(config);
+    cmfilter::ColorMapLoadOptions load;
+    load.path = std::string(CMFILTER_SOURCE_DIR) + "/luts/terrain.png";
+    load.vmin = -0.68;
+    load.vmax = 0.68;
+    auto map = cmfilter::load_color_map(load, *config);
+    REQUIRE(map);
+    auto spec = cmfilter::parse_noise_spec("fbm:base=gradient,octaves=6");
+    REQUIRE(spec);
+    auto noise = cmfilter::make_noise(*spec);
+    REQUIRE(noise);
+    auto sigmas = cmfilter::NoiseSigmaTable::create(-9, 0.25, std::vector<double>(45, 0.1));
+    REQUIRE(sigmas);
+    cmfilter::SurfaceMaterial m;
+    m.map = map->map;
+    cmfilter::GaussianColorTableOptions table_options;
+    table_options.values = 16;
+    table_options.sigmas = 16;
+    auto table = cmfilter::GaussianColorTable::bake(m.map, table_options);
+    REQUIRE(table);
+    m.table = std::move(*table);
+    m.noise.emplace(std::move(*noise), std::move(*sigmas));
+    return m;
 }
 
 // CIEDE2000 between two renders of the same scene, over the pixels the first

@@ -47,31 +47,7 @@ PlaneScene plane_scene(int w, int h)
     plane.mapping.u_axis = {0.5, 0, 0};
     plane.mapping.v_axis = {0, 0, 0.5};
     s.scene.surfaces.push_back(plane);
-
-    auto config = ColorConfig::load("");
-    REQUIRE(config);
-    ColorMapLoadOptions load;
-    load.path = std::string(CMFILTER_SOURCE_DIR) + "/luts/terrain.png";
-    load.vmin = -0.68;
-    load.vmax = 0.68;
-    auto map = load_color_map(load, *config);
-    REQUIRE(map);
-    auto spec = parse_noise_spec("fbm:base=gradient,octaves=6");
-    REQUIRE(spec);
-    auto noise = make_noise(*spec);
-    REQUIRE(noise);
-    auto sigmas = NoiseSigmaTable::create(-9, 0.25, std::vector<double>(45, 0.1));
-    REQUIRE(sigmas);
-    SurfaceMaterial m;
-    m.map = map->map;
-    GaussianColorTableOptions table_options;
-    table_options.values = 16;
-    table_options.sigmas = 16;
-    auto table = GaussianColorTable::bake(m.map, table_options);
-    REQUIRE(table);
-    m.table = std::move(*table);
-    m.noise.emplace(std::move(*noise), std::move(*sigmas));
-    s.materials.push_back(std::move(m));
+    s.materials.push_back(cmfilter_test::terrain_fbm_material());
     return s;
 }
 

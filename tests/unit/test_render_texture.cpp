@@ -5,10 +5,13 @@
 // and sigma vanishes; a constant driver gives C0 of the constant exactly; two
 // references with different seeds agree; renders do not depend on the thread
 // count; a moments file brings its driver back from cmfilter:source, and
-// says so when the driver is gone or changed; clamp maps whose domain misses
-// the texture are refused; the exact method on a driver with four values is
-// the box mean of C0 over the texels and near the reference, and refuses a
-// render without histograms and a driver with too many values.
+// refuses it changed; with the driver gone, naive and gaussian render from
+// the moments alone and the other methods name the missing file; clamp maps
+// whose domain misses the texture are refused; the exact method on a driver
+// with four values is the box mean of C0 over the texels and near the
+// reference, and refuses a render without histograms and a driver with too
+// many values; on a footprint made of aligned squares, the probes give the
+// box mean of f, the squares' sigmas, and (exact) the box mean of C0.
 #include "cmfilter/camera.h"
 #include "cmfilter/color_config.h"
 #include "cmfilter/moment_pyramid.h"
@@ -265,7 +268,7 @@ TEST_CASE("texture renders do not depend on the thread count")
     }
 }
 
-TEST_CASE("a moments driver reads its texels from cmfilter:source and refuses a driver gone or changed")
+TEST_CASE("a moments driver reads its texels from cmfilter:source, refuses a driver changed, and does without one gone")
 {
     const int size = 32;
     const std::string driver = write_driver("source.exr", size, size, smooth_driver(size, size));
@@ -285,17 +288,50 @@ TEST_CASE("a moments driver reads its texels from cmfilter:source and refuses a 
         for (double u : {0.1, 0.37, 0.93})
             CHECK(from_moments[0].texture->value(u, 0.4) == from_image[0].texture->value(u, 0.4));
     }
-    SUBCASE("gone")
+    SUBCASE("gone: naive and gaussian render from the moments alone, the rest name the missing driver")
     {
         const std::string gone = write_driver("gone.exr", size, size, smooth_driver(size, size));
         scene.surfaces[0].material.driver.moments_path = bake_moments(gone, "gone-moments.exr");
+        const std::vector<SurfaceMaterial> with_source = materials_of(scene);
         fs::remove(gone);
-        const Error e = material_error(scene);
-        CHECK(e.kind == ErrorKind::Io);
-        CAPTURE(e.message);
-        CHECK(e.message.rfind("texture-scene: /surfaces/0/material/driver/moments: cannot read driver '" + gone +
-                                  "' recorded in '" + scene.surfaces[0].material.driver.moments_path + "'",
-                              0) == 0);
+        const std::vector<SurfaceMaterial> without = materials_of(scene);
+        REQUIRE(without[0].texture);
+        CHECK_FALSE(without[0].texture->has_level0());
+        CHECK(with_source[0].texture->has_level0());
+        const std::string named = "texture-scene: /surfaces/0/material/driver/moments: cannot read driver '" + gone +
+                                  "' recorded in '" + scene.surfaces[0].material.driver.moments_path + "'";
+        for (RenderMethod method : {RenderMethod::Naive, RenderMethod::Gaussian}) {
+            RenderOptions options;
+            options.method = method;
+            auto a = render(scene, with_source, options);
+            auto b = render(scene, without, options);
+            REQUIRE(a);
+            REQUIRE(b);
+            CAPTURE(to_string(method));
+            CHECK(a->rgb == b->rgb);  // level 0 plays no part in them
+        }
+        for (RenderMethod method : {RenderMethod::Supersample, RenderMethod::Reference}) {
+            RenderOptions options;
+            options.method = method;
+            auto image = render(scene, without, options);
+            REQUIRE_FALSE(image);
+            CHECK(image.error().kind == ErrorKind::Io);
+            CAPTURE(image.error().message);
+            CHECK(image.error().message.rfind(named, 0) == 0);
+            CHECK(image.error().message.find(std::string("; ") + to_string(method) + " reads the driver's texels") !=
+                  std::string::npos);
+        }
+        auto config = ColorConfig::load("");
+        REQUIRE(config);
+        MaterialOptions exact;
+        exact.histograms = true;
+        auto histograms = prepare_materials(scene, *config, exact);
+        REQUIRE_FALSE(histograms);
+        CHECK(histograms.error().kind == ErrorKind::Io);
+        CAPTURE(histograms.error().message);
+        CHECK(histograms.error().message.rfind(named, 0) == 0);
+        CHECK(histograms.error().message.find("exact bakes its histograms from the driver's texels") !=
+              std::string::npos);
     }
     SUBCASE("changed")
     {
@@ -445,4 +481,122 @@ TEST_CASE("exact refuses a render without histograms, and a driver with too many
     CHECK(materials.error().kind == ErrorKind::BadInput);
     CHECK(materials.error().message.find("/surfaces/0/material/driver/image: ") != std::string::npos);
     CHECK(materials.error().message.find("1024 distinct values") != std::string::npos);
+}
+
+namespace {
+
+// A plane seen straight down, 32 x 32 pixels over 2 x 2 units, mapped with
+// 512 x 512 texels a repeat but 1 repeat a unit along u and 1/4 along v:
+// each pixel is a rectangle of 32 x 8 level-0 texels, its centre at
+// u n = 16 (mod 32) and v n = 4 (mod 8). Cut into four probes along u, each
+// a square of 8 x 8 texels (the rms width of a piece 8 texels long and 8
+// wide), the pieces are level-3 texels, so each probe reads one texel there.
+const int kStripN = 512, kStripPixels = 32;
+
+Scene strip_scene(const std::string& driver)
+{
+    const double d = 1 / std::tan(kTwoPi / 24);  // fov 30 degrees: 2 units across
+    Scene scene = texture_scene(driver, {0, d, 0}, {0, 0, 0}, {0, 0, 1}, 1, kStripPixels, kStripPixels);
+    scene.surfaces[0].mapping.v_axis = {0, 0, 0.25};
+    return scene;
+}
+
+// Brute force over a pixel's 32 x 8 texels (periodic): calls add(x, y) for
+// each texel, its coordinates wrapped into the image.
+template <typename F>
+void for_footprint_texels(double u, double v, F add)
+{
+    const long x0 = std::lround(u * kStripN) - 16, y0 = std::lround(v * kStripN) - 4;
+    for (long j = 0; j < 8; ++j)
+        for (long i = 0; i < 32; ++i)
+            add(((x0 + i) % kStripN + kStripN) % kStripN, ((y0 + j) % kStripN + kStripN) % kStripN);
+}
+
+}  // namespace
+
+TEST_CASE("texture probes on a footprint of aligned squares give its box mean and the squares' mean sigma")
+{
+    const std::vector<float> f = smooth_driver(kStripN, kStripN);
+    const Scene scene = strip_scene(write_driver("strip-smooth.exr", kStripN, kStripN, f));
+    const std::vector<SurfaceMaterial> materials = materials_of(scene);
+    auto camera = Camera::create(scene.camera);
+    REQUIRE(camera);
+    RenderOptions options;
+    options.method = RenderMethod::Naive;
+    // A ratio of 4 (up to rounding, which may make it 4 + 1e-15 and ask for
+    // five): four probes.
+    options.max_probes = 4;
+    auto image = render(scene, materials, options);
+    REQUIRE(image);
+    double worst_mean = 0, worst_sigma = 0, worst_lod = 0;
+    for (int y = 0; y < kStripPixels; ++y)
+        for (int x = 0; x < kStripPixels; ++x) {
+            const auto hit = intersect_scene(scene, camera->ray(x + 0.5, y + 0.5));
+            REQUIRE(hit);
+            // The box mean of f over the 32 x 8 texels, and the mean of the
+            // standard deviations of f over each 8 x 8 square.
+            double sum = 0;
+            double square_sum[4] = {0, 0, 0, 0}, square_sq[4] = {0, 0, 0, 0};
+            int k = 0;
+            for_footprint_texels(hit->hit.u, hit->hit.v, [&](long tx, long ty) {
+                const double value = f[static_cast<std::size_t>(ty * kStripN + tx)];
+                const int square = (k % 32) / 8;
+                sum += value;
+                square_sum[square] += value;
+                square_sq[square] += value * value;
+                ++k;
+            });
+            double sigma = 0;
+            for (int s = 0; s < 4; ++s) {
+                const double mean = square_sum[s] / 64;
+                sigma += 0.25 * std::sqrt(std::max(0.0, square_sq[s] / 64 - mean * mean));
+            }
+            const std::size_t p = static_cast<std::size_t>(y) * kStripPixels + static_cast<std::size_t>(x);
+            worst_mean = std::max(worst_mean, std::abs(image->mean[p] - sum / 256));
+            worst_sigma = std::max(worst_sigma, std::abs(image->sigma[p] - sigma));
+            worst_lod = std::max(worst_lod, std::abs(image->lod[p] - 3.0));
+        }
+    MESSAGE("largest differences: mean " << worst_mean << ", sigma " << worst_sigma << ", lod " << worst_lod);
+    // float32 moments of values near 0.5 (relative 6e-8), and sigma from
+    // m2 - m1^2 of float32 moments of f - c: a few 1e-6 at most.
+    CHECK(worst_mean < 1e-5);
+    CHECK(worst_sigma < 1e-4);
+    CHECK(worst_lod < 1e-6);
+}
+
+TEST_CASE("exact follows an anisotropic footprint: the box mean of C0 over a footprint of aligned squares")
+{
+    const std::vector<float> f = quantised_driver(kStripN, kStripN);
+    const Scene scene = strip_scene(write_driver("strip-quantised.exr", kStripN, kStripN, f));
+    const std::vector<SurfaceMaterial> materials = exact_materials_of(scene);
+    auto camera = Camera::create(scene.camera);
+    REQUIRE(camera);
+    // Against the box mean of C0 over each pixel's 32 x 8 piecewise-constant
+    // texels, computed here: exact up to float32 weights. One probe (an
+    // isotropic lookup of the whole footprint's width) is far from it.
+    RenderOptions options;
+    options.method = RenderMethod::Exact;
+    double worst[2] = {0, 0};
+    for (int probes : {4, 1}) {  // four probes, as above; or one
+        options.max_probes = probes;
+        auto exact = render(scene, materials, options);
+        REQUIRE(exact);
+        double& w = worst[probes == 4 ? 0 : 1];
+        for (int y = 0; y < kStripPixels; ++y)
+            for (int x = 0; x < kStripPixels; ++x) {
+                const auto hit = intersect_scene(scene, camera->ray(x + 0.5, y + 0.5));
+                REQUIRE(hit);
+                Rgb want;
+                for_footprint_texels(hit->hit.u, hit->hit.v, [&](long tx, long ty) {
+                    want += (1.0 / 256) * materials[0].map.evaluate(f[static_cast<std::size_t>(ty * kStripN + tx)]);
+                });
+                const std::size_t p = static_cast<std::size_t>(y) * kStripPixels + static_cast<std::size_t>(x);
+                w = std::max({w, std::abs(exact->rgb[3 * p] - want.r), std::abs(exact->rgb[3 * p + 1] - want.g),
+                              std::abs(exact->rgb[3 * p + 2] - want.b)});
+            }
+    }
+    MESSAGE("exact vs the box mean of C0 over the texels: largest difference " << worst[0] << " with probes, "
+                                                                                << worst[1] << " with one");
+    CHECK(worst[0] < 1e-4);
+    CHECK(worst[1] > 1e-2);
 }

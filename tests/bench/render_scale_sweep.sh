@@ -1,0 +1,119 @@
+#!/usr/bin/env bash
+# Where each render method breaks down (docs/render.md, "Noise scale"): the
+# bundled terrain ground plane and far sphere with their fBm made finer and
+# finer (the texture mapping's scale times 1, 2, 4, ... 128 for the plane,
+# 1/128, 1/64, ... 1 for the sphere, whose bundled noise is already far
+# below its pixels), naive, gaussian
+# (256 x 256 sqrt table) and supersample 16 each against a reference grown
+# until repeatable (cmfilter bench). Writes WORK_DIR/scale-sweep.csv
+# (scene, scale, then bench's columns) and WORK_DIR/scale-sweep.png (mean
+# CIEDE2000 against the scale, gnuplot), and prints the table of the docs.
+#   bash tests/bench/render_scale_sweep.sh BUILD_DIR WORK_DIR [THREADS] [PLANE_WxH] [SPHERE_WxH]
+set -euo pipefail
+build=$(cd "$1" && pwd)
+mkdir -p "$2"
+work=$(cd "$2" && pwd)
+threads=${3:-0}
+plane_size=${4:-320x180}
+sphere_size=${5:-480x480}
+root=$(cd "$(dirname "$0")/../.." && pwd)
+scenes="$root/examples/scenes"
+cmfilter="$build/tools/cmfilter"
+configurations="naive,gaussian 256x256 sqrt,supersample 16"
+plane_scales="1 2 4 8 16 32 64 128"
+sphere_scales="0.0078125 0.015625 0.03125 0.0625 0.125 0.25 0.5 1"
+
+# A scene file with absolute paths and its mapping scaled by $3.
+scaled_scene() {
+  python3 - "$1" "$2" "$3" "$scenes" <<'EOF'
+import json, os, sys
+source, target, scale, folder = sys.argv[1], sys.argv[2], float(sys.argv[3]), sys.argv[4]
+scene = json.load(open(source))
+for surface in scene["surfaces"]:
+    mapping = surface["mapping"]
+    if mapping["type"] == "planar":
+        mapping["u_axis"] = [scale * x for x in mapping["u_axis"]]
+        mapping["v_axis"] = [scale * x for x in mapping["v_axis"]]
+    else:
+        mapping["u_scale"] *= scale
+        mapping["v_scale"] *= scale
+    material = surface["material"]
+    for part, key in (("colormap", "image"), ("colormap", "table"), ("driver", "sigma_table"),
+                      ("driver", "image"), ("driver", "moments")):
+        if key in material[part]:
+            material[part][key] = os.path.normpath(os.path.join(folder, material[part][key]))
+json.dump(scene, open(target, "w"), indent=1)
+EOF
+}
+
+out="$work/scale-sweep.csv"
+runs=()
+for base in plane-fbm-terrain sphere-fbm-far; do
+  size=$plane_size scales=$plane_scales
+  [[ $base == sphere-* ]] && size=$sphere_size scales=$sphere_scales
+  for scale in $scales; do
+    scene="$work/$base-x$scale.json"
+    scaled_scene "$scenes/$base.json" "$scene" "$scale"
+    "$cmfilter" bench "$scene" --csv "$work/$base-x$scale.csv" --only "$configurations" --resolution "$size" \
+                --repeats 1 --threads "$threads" -q
+    runs+=("$base" "$scale" "$work/$base-x$scale.csv")
+  done
+done
+# One CSV: the scene and scale, then bench's columns.
+python3 - "$out" "${runs[@]}" <<'EOF'
+import csv, os, sys
+out, runs = sys.argv[1], sys.argv[2:]
+with open(out + ".tmp", "w", newline="") as f:
+    w = None
+    for i in range(0, len(runs), 3):
+        base, scale, path = runs[i:i + 3]
+        for row in csv.DictReader(open(path)):
+            if w is None:
+                w = csv.DictWriter(f, ["base", "scale"] + list(row))
+                w.writeheader()
+            w.writerow({"base": base, "scale": scale, **row})
+os.replace(out + ".tmp", out)
+EOF
+
+python3 - "$out" "$work" <<'EOF'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+work = sys.argv[2]
+print("| scene | scale | reference rays (repeat) | naive | gaussian (near / middle / horizon) | supersample 16 | naive / gaussian |")
+print("|---|---:|---|---:|---|---:|---:|")
+series = {}
+for base in dict.fromkeys(r["base"] for r in rows):
+    for scale in dict.fromkeys(r["scale"] for r in rows if r["base"] == base):
+        by = {r["configuration"]: r for r in rows if r["base"] == base and r["scale"] == scale}
+        rep, nv, ga, ss = by["reference-repeat"], by["naive"], by["gaussian 256x256 sqrt"], by["supersample 16"]
+        f = lambda r, k="mean": float(r[k])
+        print(f"| {base} | {scale} | {rep['spp']} ({f(rep):.2f}) | {f(nv):.2f} | {f(ga):.2f} ({f(ga,'near_mean'):.2f} / "
+              f"{f(ga,'middle_mean'):.2f} / {f(ga,'horizon_mean'):.2f}) | {f(ss):.2f} | {f(nv) / f(ga):.1f} |")
+        for name, r in (("naive", nv), ("gaussian", ga), ("supersample 16", ss)):
+            series.setdefault((base, name), []).append((float(scale), f(r)))
+with open(f"{work}/scale-sweep.dat", "w") as d:
+    for (base, name), points in series.items():
+        d.write(f'# {base} {name}\n')
+        for x, y in points:
+            d.write(f"{x} {y}\n")
+        d.write("\n\n")
+with open(f"{work}/scale-sweep.gp", "w") as g:
+    # One panel per scene: its own x axis, the mapping's scale as a multiple
+    # of the bundled scene's.
+    g.write(f'set terminal pngcairo size 1100,500 font ",11"\nset output "{work}/scale-sweep.png"\n'
+            'set multiplot layout 1,2 title "Where each method breaks down: the driver made finer (mean CIEDE2000 against the reference)"\n'
+            'set logscale xy 2\nset grid\nset key top left\nset yrange [0.25:32]\n'
+            'set xlabel "mapping scale, x the bundled scene\'s (finer noise to the right)"\n'
+            'set ylabel "mean CIEDE2000"\n'
+            'set arrow 1 from graph 0, first 1 to graph 1, first 1 nohead dt 2 lc rgb "black"\n')
+    styles = {"naive": 'pt 9 lc rgb "red"', "gaussian": 'pt 7 lc rgb "blue"', "supersample 16": 'pt 13 lc rgb "dark-green"'}
+    names = list(dict.fromkeys(base for base, _ in series))
+    for base in names:
+        g.write(f'set title "{base}"\n')
+        plots = [f'"{work}/scale-sweep.dat" index {i} with linespoints lw 2 ps 1.3 {styles[name]} title "{name}"'
+                 for i, (b, name) in enumerate(series) if b == base]
+        g.write("plot " + ", \\\n     ".join(plots) + "\n")
+    g.write("unset multiplot\n")
+EOF
+gnuplot "$work/scale-sweep.gp"
+echo "wrote $out and $work/scale-sweep.png" >&2
