@@ -25,6 +25,7 @@ struct BenchArgs {
     int reference_samples = kReferenceSamples;
     int repeats = 3;
     int probes = 16;
+    bool no_edge_coverage = false;
     std::uint64_t seed = 0;
     std::string ocio_config;
     int threads = 0;
@@ -66,6 +67,7 @@ Status run(const BenchArgs& args)
     options.max_probes = args.probes;
     if (args.probes < 1 || args.probes > 64)
         return bad_input("--probes " + std::to_string(args.probes) + " is out of range (expected 1 to 64)");
+    options.edge_coverage = !args.no_edge_coverage;
     options.seed = args.seed;
     options.threads = args.threads;
     if (!args.quiet) options.note = [](const std::string& line) { std::cerr << "bench: " << line << "\n"; };
@@ -114,6 +116,8 @@ Command setup_bench(CLI::App& parent)
         ->capture_default_str();
     app->add_option("--probes", args->probes, "Noise drivers: probes along an anisotropic footprint (naive, gaussian)")
         ->capture_default_str();
+    app->add_flag("--no-edge-coverage", args->no_edge_coverage,
+                  "naive, gaussian: the centre ray's surface for the whole pixel, also on silhouettes and horizons");
     app->add_option("--seed", args->seed, "Seed of the sub-pixel samples")->capture_default_str();
     app->add_option("--ocio-config", args->ocio_config,
                     "OpenColorIO config (default: $OCIO if set, else the built-in config)");

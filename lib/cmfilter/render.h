@@ -25,6 +25,8 @@
 // a texture's moments are looked up over the parallelogram itself
 // (TextureSystem's anisotropic filter, filtered_texture.h), and the width
 // gives only its LOD AOV, log2 of the width in level-0 texels.
+// The one-ray methods cover the pixels on silhouettes, horizons and meetings
+// of surfaces geometrically (RenderOptions::edge_coverage, pixel_coverage.h).
 // Shading: Lambertian, albedo x (radiance max(0, <n, l>) + ambient).
 // Deterministic for a given seed, whatever the thread count.
 #pragma once
@@ -59,6 +61,12 @@ struct RenderOptions {
     // by default: on the bundled ground planes the error stops falling there
     // (docs/render.md).
     int max_probes = 16;
+    // naive, gaussian, exact: where a silhouette, a horizon or a meeting of
+    // two surfaces crosses the pixel, mix each surface seen (filtered over
+    // its own part) and the background by their shares of the box pixel
+    // (pixel_coverage.h), as the supersampled methods do; false: the centre
+    // ray's surface (or the background) for the whole pixel.
+    bool edge_coverage = true;
     std::function<void(double)> progress;  // fraction of rows done, may be empty
 };
 
