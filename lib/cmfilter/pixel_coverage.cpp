@@ -72,6 +72,21 @@ PixelCoverage::PixelCoverage(const Scene& scene, const Camera& camera)
         for (std::size_t j = i + 1; j < scene.surfaces.size(); ++j)
             if (surfaces_meet(scene.surfaces[i], scene.surfaces[j]))
                 meeting_.emplace_back(static_cast<int>(i), static_cast<int>(j));
+    // Tiles of kTile x kTile pixels that may hold an edge: an outline may
+    // cross the tile, or two surfaces that meet may both be seen in it.
+    tiles_x_ = (camera.width() + kTile - 1) / kTile;
+    const int tiles_y = (camera.height() + kTile - 1) / kTile;
+    tiles_.assign(static_cast<std::size_t>(tiles_x_) * static_cast<std::size_t>(tiles_y), 0);
+    for (int ty = 0; ty < tiles_y; ++ty)
+        for (int tx = 0; tx < tiles_x_; ++tx) {
+            const double x0 = tx * kTile, y0 = ty * kTile;
+            bool edge = false;
+            for (const SurfaceOutline& o : outlines_) edge = edge || o.may_cross(x0, y0, kTile);
+            for (const auto& [i, j] : meeting_)
+                edge = edge || (outlines_[static_cast<std::size_t>(i)].may_see(x0, y0, kTile) &&
+                                outlines_[static_cast<std::size_t>(j)].may_see(x0, y0, kTile));
+            tiles_[static_cast<std::size_t>(ty * tiles_x_ + tx)] = edge;
+        }
 }
 
 Vec3 PixelCoverage::direction(double px, double py) const
@@ -138,7 +153,7 @@ bool PixelCoverage::holds_meeting(const Box& box, std::vector<std::pair<double, 
     return found;
 }
 
-bool PixelCoverage::on_edge(int x, int y) const
+bool PixelCoverage::on_edge_in_tile(int x, int y) const
 {
     for (const SurfaceOutline& o : outlines_)
         if (o.may_cross(x, y)) return true;

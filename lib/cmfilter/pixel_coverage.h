@@ -3,7 +3,7 @@
 // first) and which share sees the background, where a silhouette, a horizon
 // or a line where two surfaces meet crosses the pixel.
 //
-// on_edge is the cheap test every pixel takes: a surface's outline
+// on_edge is the cheap test every pixel takes (first for its 16 x 16 tile): a surface's outline
 // (surface_outline.h) may cross the box, or two surfaces that meet each other
 // (a sphere through a plane, two overlapping spheres, two planes that are
 // not parallel) are both seen and their depth order differs between the
@@ -68,12 +68,19 @@ public:
     // cut in four, at most kMaxDepth times (a pixel 1/8 wide at the end).
     static constexpr double kMaxSlope = 4;
     static constexpr int kMaxDepth = 3;
+    // on_edge first looks up the pixel's tile of kTile x kTile pixels, which
+    // the constructor marks where an edge may lie (the same tests on the
+    // tile's box), so most pixels cost one lookup.
+    static constexpr int kTile = 16;
 
     PixelCoverage(const Scene& scene, const Camera& camera);
 
     // Whether the box pixel (x, y) may see more than one surface, or a
     // surface and the background.
-    bool on_edge(int x, int y) const;
+    bool on_edge(int x, int y) const
+    {
+        return tiles_[static_cast<std::size_t>((y / kTile) * tiles_x_ + x / kTile)] && on_edge_in_tile(x, y);
+    }
     // The shares of the box pixel (x, y); `out` is overwritten.
     void cover(int x, int y, PixelCover& out) const;
     // The hit at a piece's representative point, its differentials those of
@@ -87,12 +94,15 @@ private:
     Camera::ImagePlane image_;
     std::vector<SurfaceOutline> outlines_;
     std::vector<std::pair<int, int>> meeting_;  // pairs of surfaces that meet each other
+    int tiles_x_ = 0;
+    std::vector<unsigned char> tiles_;  // per tile: whether an edge may lie in it
 
     struct Box {
         double x0, y0, size;  // [x0, x0 + size] x [y0, y0 + size], image coordinates
     };
     struct Moments;
 
+    bool on_edge_in_tile(int x, int y) const;
     Vec3 direction(double px, double py) const;
     int nearest(double px, double py) const;  // -1: background
     bool holds_meeting(const Box& box, std::vector<std::pair<double, double>>* across) const;

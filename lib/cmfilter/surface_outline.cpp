@@ -24,6 +24,14 @@ std::pair<double, double> unit(double x, double y)
     return {x / norm, y / norm};
 }
 
+// Whether dc < c sqrt(dd) (dd >= 0), without the root: the cosine of an
+// angle below c.
+bool below_cosine(double dc, double dd, double c)
+{
+    if (c >= 0) return dc < 0 || dc * dc < c * c * dd;
+    return dc < 0 && dc * dc > c * c * dd;
+}
+
 }  // namespace
 
 SurfaceOutline::SurfaceOutline(const Surface& surface, const Camera::ImagePlane& image) : image_(image)
@@ -40,6 +48,7 @@ SurfaceOutline::SurfaceOutline(const Surface& surface, const Camera::ImagePlane&
     }
     centre_ = surface.center - image.origin;
     radius2_ = surface.radius * surface.radius;
+    centre2_ = dot(centre_, centre_);
     const double distance = length(centre_);
     if (!(distance > surface.radius)) {
         kind_ = Kind::Everywhere;
@@ -72,10 +81,12 @@ int SurfaceOutline::side(double x0, double y0, double size) const
         return centre > half_range ? 1 : centre < -half_range ? -1 : 0;
     }
     case Kind::Cone: {
+        // cos theta = <d, C> / sqrt(|d|^2 |C|^2), compared without the root.
         const ConeBounds bounds = size == 1 ? pixel_ : cone_bounds(size);
         const Vec3 d = image_.corner + (x0 + 0.5 * size) * image_.step_x + (y0 + 0.5 * size) * image_.step_y;
-        const double cosine = dot(d, centre_) / (length(d) * length(centre_));
-        return cosine < bounds.cos_outer - kSlack ? -1 : cosine > bounds.cos_inner + kSlack ? 1 : 0;
+        const double dc = dot(d, centre_), dd = dot(d, d) * centre2_;
+        if (below_cosine(dc, dd, bounds.cos_outer - kSlack)) return -1;
+        return below_cosine(dc, dd, bounds.cos_inner + kSlack) ? 0 : 1;
     }
     }
     return -1;

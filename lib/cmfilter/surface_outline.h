@@ -62,7 +62,7 @@ private:
         double cos_outer = -1, cos_inner = 1;
     };
     Vec3 centre_;
-    double radius2_ = 0, alpha_ = 0, half_diagonal_ = 0;
+    double radius2_ = 0, centre2_ = 0, alpha_ = 0, half_diagonal_ = 0;
     ConeBounds pixel_;
 
     ConeBounds cone_bounds(double size) const;
