@@ -3,25 +3,30 @@
 // first) and which share sees the background, where a silhouette, a horizon
 // or a line where two surfaces meet crosses the pixel.
 //
-// on_edge is the cheap test every pixel takes (first for its 16 x 16 tile): a surface's outline
-// (surface_outline.h) may cross the box, or two surfaces that meet each other
-// (a sphere through a plane, two overlapping spheres, two planes that are
-// not parallel) are both seen and their depth order differs between the
+// on_edge is the cheap test every pixel takes (first a lookup of its 16 x 16
+// tile, marked by the same tests on the tile's box): a surface's outline
+// (surface_outline.h) may cross the box, or two surfaces that meet each
+// other (a sphere through a plane, two overlapping spheres, two planes that
+// are not parallel) are both seen and their depth order differs between the
 // box's corners and centre. Only such pixels are covered:
-//   - the box is cut into kColumns strips across the edges (vertical strips
-//     where the outlines crossing it run more horizontally than vertically,
-//     horizontal ones otherwise); on each strip's middle line the points
-//     where an outline crosses are found analytically (a root of the
-//     horizon's line or of the silhouette's conic), and each piece of the
-//     line between them is given to the surface its middle ray meets first
-//     (or the background). Within a piece nothing changes but where two
-//     surfaces meet; where the pixel holds such a meeting, the piece is
-//     sampled at kDepthSamples points and every change of nearest surface
-//     is found by bisection. The strips' midpoint rule is exact for a
-//     straight edge that crosses two opposite sides of the box (the usual
-//     horizon) and off by at most w^2 / 8 (w = 1 / kColumns, about 5e-4)
-//     of the pixel for each kink of the covered length where a straight
-//     edge cuts a corner; a curved silhouette adds its curvature's share;
+//   - the box is cut into kColumns strips across its edges: along x or y,
+//     whichever makes the steepest edge's slope against the strips the
+//     smaller (from the outlines' gradients and the depth difference's), a
+//     box with edges steep both ways (a silhouette's side meeting a horizon)
+//     being cut in four first, up to kMaxDepth times. On each strip's middle
+//     line the points where an outline crosses are found analytically (a
+//     root of the horizon's line or of the silhouette's conic), and each
+//     piece of the line between them is given to the surface its middle ray
+//     meets first (or the background). Within a piece nothing changes but
+//     where two surfaces meet; where the pixel may hold such a meeting (the
+//     depth order differs, or the outline of one of the two crosses it),
+//     the piece is sampled at kDepthSamples + 1 points end to end and every
+//     change of nearest surface is found by bisection. The strips' midpoint
+//     rule is exact for a straight edge that crosses two opposite sides of
+//     the box (the usual horizon) and off by at most s w^2 / 8 (w = 1 /
+//     kColumns, s <= kMaxSlope the edge's slope against the strips) of the
+//     pixel for each kink of the covered length where a straight edge cuts
+//     a corner; a curved silhouette adds its curvature's share;
 //   - each surface seen gets its share of the area, a representative image
 //     point (the centroid of its part, or, when the centroid sees another
 //     surface, the middle of its longest piece) and the part's own
@@ -31,8 +36,9 @@
 //     it covers, with the same second moments (the rms width's argument in
 //     footprint_width.h).
 // The pixel's colour is then sum_i share_i C_i + share_background
-// background, C_i the surface's colour filtered over its part (the box
-// filter of the reference, split by what each sub-region sees).
+// background, C_i the surface's colour filtered over its part: the pixel's
+// integral over its box (eq. 1, w_P the box) split by what each part sees,
+// as the reference's rays split it.
 #pragma once
 
 #include "cmfilter/camera.h"
@@ -73,6 +79,7 @@ public:
     // tile's box), so most pixels cost one lookup.
     static constexpr int kTile = 16;
 
+    // Keeps references to both: they must outlive it.
     PixelCoverage(const Scene& scene, const Camera& camera);
 
     // Whether the box pixel (x, y) may see more than one surface, or a
