@@ -25,6 +25,7 @@ struct RenderArgs {
     std::string method = "gaussian";
     int samples = 16;
     int probes = 16;
+    bool no_edge_coverage = false;
     std::uint64_t seed = 0;
     std::string footprint = "rms";
     std::string aov;
@@ -78,6 +79,7 @@ Status run(const RenderArgs& args)
     if (args.probes < 1 || args.probes > 64)
         return bad_input("--probes " + std::to_string(args.probes) + " is out of range (expected 1 to 64)");
     options.max_probes = args.probes;
+    options.edge_coverage = !args.no_edge_coverage;
     if (talk && isatty(STDERR_FILENO)) options.progress = terminal_progress("render");
     auto image = render(*scene, *materials, options);
     if (!image) return image.error();
@@ -110,6 +112,8 @@ Status run(const RenderArgs& args)
         j["samples"] = image->samples;
         j["seed"] = args.seed;
         j["footprint"] = to_string(options.footprint);
+        j["edge_coverage"] = options.edge_coverage && *method != RenderMethod::Supersample &&
+                             *method != RenderMethod::Reference;
         j["size"] = {image->width, image->height};
         j["pixels_hit"] = hits;
         j["seconds"] = image->seconds;
@@ -140,6 +144,9 @@ Command setup_render(CLI::App& parent)
     app->add_option("--probes", args->probes,
                     "Filter an anisotropic footprint as up to N probes along its major edge (naive, gaussian, exact)")
         ->capture_default_str();
+    app->add_flag("--no-edge-coverage", args->no_edge_coverage,
+                  "naive, gaussian, exact: take the centre ray's surface for the whole pixel, also on silhouettes "
+                  "and horizons");
     app->add_option("--aov", args->aov, "Also write PREFIX.mean.exr, PREFIX.sigma.exr and PREFIX.lod.exr");
     app->add_option("--ocio-config", args->ocio_config,
                     "OpenColorIO config (default: $OCIO if set, else the built-in config)");
