@@ -30,6 +30,7 @@ struct BenchArgs {
     int repeats = 3;
     int probes = 16;
     std::vector<std::string> only;
+    bool no_edge_coverage = false;
     std::uint64_t seed = 0;
     std::string ocio_config;
     int threads = 0;
@@ -85,6 +86,7 @@ Status run(const BenchArgs& args)
         if (!chosen) return chosen.error();
         options.configurations = std::move(*chosen);
     }
+    options.edge_coverage = !args.no_edge_coverage;
     options.seed = args.seed;
     options.threads = args.threads;
     if (!args.quiet) options.note = [](const std::string& line) { std::cerr << "bench: " << line << "\n"; };
@@ -145,6 +147,8 @@ Command setup_bench(CLI::App& parent)
                     "Run only these configurations, by the CSV's labels, comma-separated "
                     "(e.g. \"naive,gaussian 256x256 sqrt\"; default: all)")
         ->delimiter(',');
+    app->add_flag("--no-edge-coverage", args->no_edge_coverage,
+                  "naive, gaussian: the centre ray's surface for the whole pixel, also on silhouettes and horizons");
     app->add_option("--seed", args->seed, "Seed of the sub-pixel samples")->capture_default_str();
     app->add_option("--ocio-config", args->ocio_config,
                     "OpenColorIO config (default: $OCIO if set, else the built-in config)");

@@ -30,6 +30,7 @@ struct RenderArgs {
     std::string method = "gaussian";
     int samples = 16;
     int probes = 16;
+    bool no_edge_coverage = false;
     std::uint64_t seed = 0;
     std::string footprint = "rms";
     std::string aov;
@@ -140,6 +141,7 @@ Status run(const RenderArgs& args)
     if (args.probes < 1 || args.probes > 64)
         return bad_input("--probes " + std::to_string(args.probes) + " is out of range (expected 1 to 64)");
     options.max_probes = args.probes;
+    options.edge_coverage = !args.no_edge_coverage;
     if (talk && isatty(STDERR_FILENO)) options.progress = terminal_progress("render");
     auto image = render(*scene, *materials, options);
     if (!image) return image.error();
@@ -172,6 +174,8 @@ Status run(const RenderArgs& args)
         j["samples"] = image->samples;
         j["seed"] = args.seed;
         j["footprint"] = to_string(options.footprint);
+        j["edge_coverage"] = options.edge_coverage && *method != RenderMethod::Supersample &&
+                             *method != RenderMethod::Reference;
         j["size"] = {image->width, image->height};
         j["pixels_hit"] = hits;
         j["seconds"] = image->seconds;
@@ -212,6 +216,9 @@ Command setup_render(CLI::App& parent)
     app->add_option("--probes", args->probes,
                     "Filter an anisotropic footprint as up to N probes along its major edge (naive, gaussian, exact)")
         ->capture_default_str();
+    app->add_flag("--no-edge-coverage", args->no_edge_coverage,
+                  "naive, gaussian, exact: take the centre ray's surface for the whole pixel, also on silhouettes "
+                  "and horizons");
     app->add_option("--tolerance", args->tolerance,
                     "Give every surface the smallest table whose lookup error (CIEDE2000, p99.9 against the exact "
                     "filtered colour) is at most DE over that surface's sigma range (default: the scene's "

@@ -73,6 +73,11 @@ Expected<Camera> Camera::create(const SceneCamera& camera)
     return c;
 }
 
+Camera::ImagePlane Camera::image_plane() const
+{
+    return {origin_, forward_ - right_ + up_, (2.0 / width_) * right_, (-2.0 / height_) * up_};
+}
+
 CameraRay Camera::ray(double px, double py) const
 {
     const Vec3 D = forward_ + (2.0 * px / width_ - 1.0) * right_ - (2.0 * py / height_ - 1.0) * up_;

@@ -28,6 +28,13 @@ public:
     static Expected<Camera> create(const SceneCamera& camera);
 
     CameraRay ray(double px, double py) const;
+    // The unnormalised direction of the header, D(px, py) = corner + px step_x
+    // + py step_y: affine in the image point, so a plane through the eye
+    // meets the image in a line and a cone about it in a conic.
+    struct ImagePlane {
+        Vec3 origin, corner, step_x, step_y;
+    };
+    ImagePlane image_plane() const;
     int width() const { return width_; }
     int height() const { return height_; }
 

@@ -5,6 +5,7 @@
 #include "cmfilter/gaussian_albedo.h"
 #include "cmfilter/noise_lattice.h"
 #include "cmfilter/parallel_for.h"
+#include "cmfilter/pixel_coverage.h"
 #include "cmfilter/stopwatch.h"
 #include "cmfilter/surface_hit.h"
 #include "cmfilter/texture_footprint.h"
@@ -14,6 +15,7 @@
 #include <cmath>
 #include <mutex>
 #include <numeric>
+#include <optional>
 
 namespace cmfilter {
 
@@ -102,6 +104,13 @@ TextureColour texture_colour(RenderMethod method)
     }
 }
 
+// A hit's colour filtered over its footprint (rgb of the one-ray methods),
+// and the driver's filtered mean, sigma and LOD there (the AOVs).
+struct FilteredHit {
+    Rgb colour;
+    double mean = 0, sigma = 0, lod = 0;
+};
+
 // The driver at a point, for the supersampled methods.
 double driver_value(const SurfaceMaterial& m, double u, double v)
 {
@@ -169,6 +178,10 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
     image.sigma.assign(pixels, 0.0f);
     image.lod.assign(pixels, 0.0f);
 
+    // Geometric coverage of pixels on edges, for the one-ray methods.
+    std::optional<PixelCoverage> coverage;
+    if (!supersampled && options.edge_coverage) coverage.emplace(scene, *camera);
+
     std::atomic<int> rows_done{0};
     std::atomic<std::size_t> footprints{0}, plain_footprints{0};
     std::mutex progress_mutex;
@@ -176,7 +189,61 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
     parallel_for(image.height, options.threads, [&](int y) {
         std::vector<double> xs, ys;
         std::vector<float> weights;
+        PixelCover cover;
         AlbedoCounts counts;
+        // The colour of a surface hit, filtered over its footprint, and the
+        // driver's filtered mean, sigma and LOD there (supersampled pixels
+        // take only the latter).
+        const auto filter_hit = [&](const SceneHit& hit) {
+            FilteredHit out;
+            const SurfaceHit& h = hit.hit;
+            const SurfaceMaterial& m = materials[static_cast<std::size_t>(hit.surface)];
+            if (m.texture) {
+                // A texture: its pyramids looked up by probes along the
+                // footprint's major edge (texture_footprint.h).
+                const TextureFootprint f =
+                    filter_texture_footprint(m, h, texture_colour(options.method), options.footprint,
+                                             options.max_probes, bin_colors[static_cast<std::size_t>(hit.surface)],
+                                             weights);
+                out.mean = f.mean;
+                out.sigma = f.sigma;
+                out.lod = f.lod;
+                counts.footprints += f.counts.footprints;
+                counts.plain += f.counts.plain;
+                if (!supersampled) out.colour = shade(f.albedo, h.normal, scene.light);
+            } else if (m.noise && options.max_probes > 1) {
+                // A noise over an anisotropic footprint: probes along its
+                // major edge (anisotropic_probes.h), colours averaged.
+                const FootprintProbes probes = footprint_probes(h.du_dx, h.dv_dx, h.du_dy, h.dv_dy,
+                                                                options.max_probes, options.footprint);
+                Rgb albedo;
+                double mean = 0, sigma = 0;
+                for (int j = 0; j < probes.count; ++j) {
+                    const double o = (j + 0.5) / probes.count - 0.5;
+                    const FilteredNoise::Parameters f =
+                        m.noise->filter(h.u + o * probes.step_u, h.v + o * probes.step_v, probes.width);
+                    if (!supersampled)  // supersampled pixels take only the AOVs from here
+                        albedo += options.method == RenderMethod::Naive ? m.map.evaluate(f.mean)
+                                                                        : gaussian_albedo(m, f.mean, f.sigma, counts);
+                    mean += f.mean;
+                    sigma += f.sigma;
+                }
+                out.mean = mean / probes.count;
+                out.sigma = sigma / probes.count;
+                out.lod = m.noise->lod(probes.width);
+                if (!supersampled) out.colour = shade((1.0 / probes.count) * albedo, h.normal, scene.light);
+            } else {
+                const FilteredDriver f = filter_driver(m, h, options.footprint);
+                out.mean = f.mean;
+                out.sigma = f.sigma;
+                out.lod = f.lod;
+                if (options.method == RenderMethod::Naive)
+                    out.colour = shade(m.map.evaluate(f.mean), h.normal, scene.light);
+                else if (options.method == RenderMethod::Gaussian)
+                    out.colour = shade(gaussian_albedo(m, f.mean, f.sigma, counts), h.normal, scene.light);
+            }
+            return out;
+        };
         for (int x = 0; x < image.width; ++x) {
             const std::size_t p = static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) +
                                   static_cast<std::size_t>(x);
@@ -185,50 +252,24 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
             const auto hit = intersect_scene(scene, centre);
             Rgb colour = scene.background;
             if (hit) {
-                const SurfaceHit& h = hit->hit;
-                const SurfaceMaterial& m = materials[static_cast<std::size_t>(hit->surface)];
+                const FilteredHit f = filter_hit(*hit);
                 image.hit[p] = 1;
-                image.distance[p] = static_cast<float>(h.t);
-                if (m.texture) {
-                    const TextureFootprint f = filter_texture_footprint(
-                        m, h, texture_colour(options.method), options.footprint, options.max_probes,
-                        bin_colors[static_cast<std::size_t>(hit->surface)], weights);
-                    image.mean[p] = static_cast<float>(f.mean);
-                    image.sigma[p] = static_cast<float>(f.sigma);
-                    image.lod[p] = static_cast<float>(f.lod);
-                    counts.footprints += f.counts.footprints;
-                    counts.plain += f.counts.plain;
-                    if (!supersampled) colour = shade(f.albedo, h.normal, scene.light);
-                } else if (m.noise && options.max_probes > 1) {
-                    // A noise over an anisotropic footprint: probes along its
-                    // major edge (anisotropic_probes.h), colours averaged.
-                    const FootprintProbes probes = footprint_probes(h.du_dx, h.dv_dx, h.du_dy, h.dv_dy,
-                                                                    options.max_probes, options.footprint);
-                    Rgb albedo;
-                    double mean = 0, sigma = 0;
-                    for (int j = 0; j < probes.count; ++j) {
-                        const double o = (j + 0.5) / probes.count - 0.5;
-                        const FilteredNoise::Parameters f =
-                            m.noise->filter(h.u + o * probes.step_u, h.v + o * probes.step_v, probes.width);
-                        if (!supersampled)  // supersampled pixels take only the AOVs from here
-                            albedo += options.method == RenderMethod::Naive ? m.map.evaluate(f.mean)
-                                                                            : gaussian_albedo(m, f.mean, f.sigma, counts);
-                        mean += f.mean;
-                        sigma += f.sigma;
-                    }
-                    image.mean[p] = static_cast<float>(mean / probes.count);
-                    image.sigma[p] = static_cast<float>(sigma / probes.count);
-                    image.lod[p] = static_cast<float>(m.noise->lod(probes.width));
-                    if (!supersampled) colour = shade((1.0 / probes.count) * albedo, h.normal, scene.light);
-                } else {
-                    const FilteredDriver f = filter_driver(m, h, options.footprint);
-                    image.mean[p] = static_cast<float>(f.mean);
-                    image.sigma[p] = static_cast<float>(f.sigma);
-                    image.lod[p] = static_cast<float>(f.lod);
-                    if (options.method == RenderMethod::Naive)
-                        colour = shade(m.map.evaluate(f.mean), h.normal, scene.light);
-                    else if (options.method == RenderMethod::Gaussian)
-                        colour = shade(gaussian_albedo(m, f.mean, f.sigma, counts), h.normal, scene.light);
+                image.distance[p] = static_cast<float>(hit->hit.t);
+                image.mean[p] = static_cast<float>(f.mean);
+                image.sigma[p] = static_cast<float>(f.sigma);
+                image.lod[p] = static_cast<float>(f.lod);
+                colour = f.colour;
+            }
+            if (coverage && coverage->on_edge(x, y)) {
+                // A silhouette, a horizon or a meeting of surfaces crosses the
+                // pixel: each surface's share, filtered over its own part
+                // (pixel_coverage.h); the AOVs stay the centre ray's.
+                coverage->cover(x, y, cover);
+                colour = cover.background * scene.background;
+                for (const CoveragePiece& piece : cover.pieces) {
+                    const std::optional<SurfaceHit> piece_hit = coverage->hit(piece);
+                    colour += piece.share *
+                              (piece_hit ? filter_hit({*piece_hit, piece.surface}).colour : scene.background);
                 }
             }
             if (supersampled) {

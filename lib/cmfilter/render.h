@@ -26,6 +26,8 @@
 // looks its pyramids up isotropically at the width's LOD, log2 of the width
 // in level-0 texels (texture_footprint.h). A pixel's colour is the mean of
 // its probes' colours.
+// The one-ray methods cover the pixels on silhouettes, horizons and meetings
+// of surfaces geometrically (RenderOptions::edge_coverage, pixel_coverage.h).
 // Shading: Lambertian, albedo x (radiance max(0, <n, l>) + ambient).
 // Deterministic for a given seed, whatever the thread count.
 #pragma once
@@ -61,6 +63,12 @@ struct RenderOptions {
     // texture_footprint.h); 1: one footprint. 16 by default: on the bundled
     // ground planes the error stops falling there (docs/render.md).
     int max_probes = 16;
+    // naive, gaussian, exact: where a silhouette, a horizon or a meeting of
+    // two surfaces crosses the pixel, mix each surface seen (filtered over
+    // its own part) and the background by their shares of the box pixel
+    // (pixel_coverage.h), as the supersampled methods do; false: the centre
+    // ray's surface (or the background) for the whole pixel.
+    bool edge_coverage = true;
     std::function<void(double)> progress;  // fraction of rows done, may be empty
 };
 

@@ -253,6 +253,7 @@ Expected<SceneBench> bench_scene(const Scene& scene, std::vector<SurfaceMaterial
         r.threads = options.threads;
         r.footprint = c.footprint;
         r.max_probes = options.max_probes;
+        r.edge_coverage = options.edge_coverage;
         row.seconds = std::numeric_limits<double>::infinity();
         Expected<RenderedImage> image = bad_input("bench: no render");
         for (int k = 0; k < options.repeats; ++k) {

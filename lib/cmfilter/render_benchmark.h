@@ -97,6 +97,7 @@ struct BenchOptions {
     std::uint64_t seed = 0;
     int threads = 0;
     int max_probes = 16;  // RenderOptions::max_probes for naive and gaussian
+    bool edge_coverage = true;  // RenderOptions::edge_coverage for naive and gaussian
     std::function<void(const std::string&)> note;  // one line per finished render, may be empty
 };
 

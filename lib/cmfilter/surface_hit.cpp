@@ -62,6 +62,12 @@ std::optional<RayHit> hit_sphere(const Vec3& center, double radius, const Camera
     return RayHit{t, dot(outward, ray.direction) > 0 ? -outward : outward};
 }
 
+std::optional<RayHit> hit_surface(const Surface& surface, const CameraRay& ray, double t_min)
+{
+    return surface.kind == SurfaceKind::Sphere ? hit_sphere(surface.center, surface.radius, ray, t_min)
+                                               : hit_plane(surface.point, surface.normal, ray, t_min);
+}
+
 // The surface point's derivative for a ray direction's derivative dd (Igehy
 // 1999): with the pinhole's fixed origin, dP/dx = 0 and
 //     dt/dx = -<t dd/dx, n> / <d, n>          (eq. 12)
@@ -139,8 +145,7 @@ void map_spherical(const TextureMapping& mapping, const Vec3& center, SurfaceHit
 std::optional<SurfaceHit> intersect(const Surface& surface, const CameraRay& ray, double t_min)
 {
     const bool sphere = surface.kind == SurfaceKind::Sphere;
-    const std::optional<RayHit> found = sphere ? hit_sphere(surface.center, surface.radius, ray, t_min)
-                                               : hit_plane(surface.point, surface.normal, ray, t_min);
+    const std::optional<RayHit> found = hit_surface(surface, ray, t_min);
     if (!found) return std::nullopt;
 
     SurfaceHit hit;
@@ -154,6 +159,16 @@ std::optional<SurfaceHit> intersect(const Surface& surface, const CameraRay& ray
     else  // a plane's spherical mapping: directions from the mapping's origin
         map_spherical(surface.mapping, sphere ? surface.center : surface.mapping.origin, hit);
     return hit;
+}
+
+std::optional<double> hit_distance(const Surface& surface, const Vec3& origin, const Vec3& direction, double t_min)
+{
+    CameraRay ray;
+    ray.origin = origin;
+    ray.direction = direction;
+    const std::optional<RayHit> found = hit_surface(surface, ray, t_min);
+    if (!found) return std::nullopt;
+    return found->t;
 }
 
 std::optional<SceneHit> intersect_scene(const Scene& scene, const CameraRay& ray)

@@ -42,6 +42,11 @@ struct SurfaceHit {
 // camera ray (CameraRay's differentials).
 std::optional<SurfaceHit> intersect(const Surface& surface, const CameraRay& ray, double t_min = 1e-9);
 
+// Only the distance of intersect's hit along a unit direction from origin:
+// no differentials, no mapping (coverage tests, pixel_coverage.h).
+std::optional<double> hit_distance(const Surface& surface, const Vec3& origin, const Vec3& direction,
+                                   double t_min = 1e-9);
+
 // The nearest hit over all surfaces and its surface's index.
 struct SceneHit {
     SurfaceHit hit;
