@@ -3,11 +3,13 @@
 #include "cmfilter/atomic_output.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 namespace cmfilter {
 
@@ -21,17 +23,30 @@ std::string quoted(const std::string& text)
     return out + "'";
 }
 
+std::string fixed(double value, int digits)
+{
+    std::ostringstream s;
+    s.setf(std::ios::fixed);
+    s.precision(digits);
+    s << value;
+    return s.str();
+}
+
 }  // namespace
 
 std::string bench_chart_script(const SceneBench& bench, const std::string& data_path, const std::string& png_path)
 {
+    const bool has_exact = std::any_of(bench.rows.begin(), bench.rows.end(), [](const BenchRow& r) {
+        return r.configuration.method == RenderMethod::Exact;
+    });
     std::ostringstream s;
     s << "set terminal pngcairo size 900,650 font 'sans,11'\n"
       << "set output " << quoted(png_path) << "\n"
       << "set title " << quoted(std::filesystem::path(bench.scene).filename().string() + ", " +
                                 std::to_string(bench.width) + " x " + std::to_string(bench.height) +
                                 ": error against a " + std::to_string(bench.reference_samples) +
-                                "-ray reference")
+                                "-ray reference (two agree to " + fixed(bench.reference_repeatability.all.mean, 2) +
+                                ")")
       << " noenhanced\n"
       << "set xrange [*:" << 2 * bench.reference_seconds << "]\n"
       << "set logscale xy\nset grid\nset key inside left bottom box opaque noenhanced font 'sans,10'\n"
@@ -42,12 +57,14 @@ std::string bench_chart_script(const SceneBench& bench, const std::string& data_
       << "set label 'reference time' at " << bench.reference_seconds << ", graph 0.95 right offset -0.5,0 tc rgb 'gray40'\n"
       << "f(x) = 1.0\n"
       << "plot " << quoted(data_path) << " using ($1 == 0 ? $3 : 1/0):4 with points pt 9 ps 2 lc rgb 'red' title 'naive', \\\n"
+      << (has_exact ? "     '' using ($1 == 6 ? $3 : 1/0):4 with points pt 8 ps 2 lc rgb 'black' title 'exact (texture histograms)', \\\n" : "")
       << "     '' using ($1 == 1 ? $3 : 1/0):4 with points pt 7 ps 1.6 lc rgb 'blue' title 'gaussian (sqrt sigma spacing)', \\\n"
       << "     '' using ($1 == 2 ? $3 : 1/0):4 with points pt 5 ps 1.4 lc rgb 'dark-cyan' title 'gaussian (linear sigma spacing)', \\\n"
       << "     '' using ($1 == 3 ? $3 : 1/0):4 with linespoints pt 13 ps 1.4 lc rgb 'dark-green' title 'supersample (rays per pixel)', \\\n"
-      << "     '' using ($1 == 4 ? $3 : 1/0):4 with points pt 11 ps 1.4 lc rgb 'orange' title 'gaussian 256x256, other footprint widths', \\\n"
+      << "     '' using ($1 == 4 ? $3 : 1/0):4 with points pt 11 ps 1.4 lc rgb 'orange' title 'gaussian 256x256, area / major / minor footprint width', \\\n"
       << "     '' using ($1 == 5 ? $3 : 1/0):4 with points pt 15 ps 1.4 lc rgb 'purple' title 'gaussian, tolerance tables or small-sigma shortcut', \\\n"
-      << "     '' using ($1 == 2 ? 1/0 : $3):4:2 with labels offset 0.8,0.6 left font 'sans,9' notitle, \\\n"
+      << "     '' using ($6 == 1 && $5 != $4 ? $3 : 1/0):4:($3 * 0.3):($5 - $4) with vectors nohead lc rgb 'gray60' notitle, \\\n"
+      << "     '' using ($6 == 1 ? $3 * 1.3 : 1/0):5:2 with labels offset 0.3,0 left font 'sans,9' notitle, \\\n"
       << "     f(x) with lines dt 2 lc rgb 'black' title 'target 1.0'\n";
     return s.str();
 }
@@ -59,28 +76,58 @@ Status write_bench_chart(const SceneBench& bench, const std::string& png_path)
     if (!out) return out.error();
     const std::string data = out->temp_path() + ".dat", script = out->temp_path() + ".gp";
     {
-        // series: 0 naive, 1 gaussian sqrt, 2 gaussian linear, 3 supersample (in rays order),
-        // 4 other footprint widths, 5 tolerance tables or the small-sigma shortcut
-        std::ofstream d(data);
+        // series: 0 naive, 1 gaussian sqrt, 2 gaussian linear, 3 supersample
+        // (in rays order), 4 other footprint widths, 5 tolerance tables or
+        // the small-sigma shortcut, 6 exact. Columns: series, label, time,
+        // error, where its label goes, whether it is labelled.
+        struct Point {
+            int series = 0;
+            std::string label;
+            double seconds = 0, error = 0, label_y = 0;
+            bool labelled = true;
+        };
+        std::vector<Point> points;
         for (const BenchRow& r : bench.rows) {
             const BenchConfiguration& c = r.configuration;
-            int series = 0;
-            std::string label = "naive";
+            Point pt;
+            pt.label = to_string(c.method);
             if (c.method == RenderMethod::Gaussian && (c.tolerance > 0 || c.shortcut > 0)) {
-                series = 5;
-                label = c.label().substr(std::string("gaussian ").size());
+                pt.series = 5;
+                pt.label = c.label().substr(std::string("gaussian ").size());
             } else if (c.method == RenderMethod::Gaussian && c.footprint != FootprintWidth::Rms) {
-                series = 4;
-                label = to_string(c.footprint);
+                pt.series = 4;  // named in the legend; their labels would sit on the 256x256 point
+                pt.labelled = false;
             } else if (c.method == RenderMethod::Gaussian) {
-                series = c.spacing == SigmaSpacing::Sqrt ? 1 : 2;
-                label = std::to_string(c.table_values) + "x" + std::to_string(c.table_sigmas);
+                pt.series = c.spacing == SigmaSpacing::Sqrt ? 1 : 2;
+                pt.label = std::to_string(c.table_values) + "x" + std::to_string(c.table_sigmas);
+                pt.labelled = c.spacing == SigmaSpacing::Sqrt;  // the linear twin lies on it
             } else if (c.method == RenderMethod::Supersample) {
-                series = 3;
-                label = std::to_string(c.samples) + " spp";
+                pt.series = 3;
+                pt.label = std::to_string(c.samples) + " spp";
+            } else if (c.method == RenderMethod::Exact) {
+                pt.series = 6;
             }
-            d << series << "\t" << label << "\t" << r.seconds << "\t" << std::max(r.error.all.mean, 1e-4) << "\n";
+            pt.seconds = r.seconds;
+            pt.error = std::max(r.error.all.mean, 1e-4);
+            pt.label_y = pt.error;
+            points.push_back(pt);
         }
+        // Labels sit right of their points (x 1.3 in time); those of points
+        // close in time and error are stacked upwards, a line (x 1.18 in
+        // error) apart, so none covers another, each joined to its point.
+        std::vector<Point*> labelled;
+        for (Point& pt : points)
+            if (pt.labelled) labelled.push_back(&pt);
+        std::sort(labelled.begin(), labelled.end(), [](const Point* a, const Point* b) { return a->error < b->error; });
+        for (std::size_t i = 0; i < labelled.size(); ++i)
+            for (std::size_t j = 0; j < i; ++j)
+                if (std::abs(std::log(labelled[i]->seconds / labelled[j]->seconds)) < 0.9 &&
+                    labelled[i]->label_y < labelled[j]->label_y * 1.18)
+                    labelled[i]->label_y = labelled[j]->label_y * 1.18;
+        std::ofstream d(data);
+        for (const Point& pt : points)
+            d << pt.series << "\t" << pt.label << "\t" << pt.seconds << "\t" << pt.error << "\t" << pt.label_y << "\t"
+              << (pt.labelled ? 1 : 0) << "\n";
         std::ofstream g(script);
         g << bench_chart_script(bench, data, out->temp_path());
     }
