@@ -177,6 +177,10 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
     image.mean.assign(pixels, 0.0f);
     image.sigma.assign(pixels, 0.0f);
     image.lod.assign(pixels, 0.0f);
+    if (supersampled) {
+        image.covered.assign(pixels, 0.0f);
+        image.covered_distance.assign(pixels, 0.0f);
+    }
 
     // Geometric coverage of pixels on edges, for the one-ray methods.
     std::optional<PixelCoverage> coverage;
@@ -275,6 +279,8 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
             if (supersampled) {
                 sample_positions(image.samples, options.seed, p, xs, ys);
                 Rgb sum;
+                int hits = 0;
+                double distance = 0;
                 for (int s = 0; s < image.samples; ++s) {
                     const CameraRay ray = camera->ray(x + xs[static_cast<std::size_t>(s)], y + ys[static_cast<std::size_t>(s)]);
                     const auto sample_hit = intersect_scene(scene, ray);
@@ -285,8 +291,12 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
                     const SurfaceHit& h = sample_hit->hit;
                     const SurfaceMaterial& m = materials[static_cast<std::size_t>(sample_hit->surface)];
                     sum += shade(m.map.evaluate(driver_value(m, h.u, h.v)), h.normal, scene.light);
+                    ++hits;
+                    distance += h.t;
                 }
                 colour = (1.0 / image.samples) * sum;
+                image.covered[p] = static_cast<float>(hits) / static_cast<float>(image.samples);
+                image.covered_distance[p] = hits > 0 ? static_cast<float>(distance / hits) : 0.0f;
             }
             image.rgb[3 * p] = static_cast<float>(colour.r);
             image.rgb[3 * p + 1] = static_cast<float>(colour.g);

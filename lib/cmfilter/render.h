@@ -80,6 +80,10 @@ struct RenderedImage {
     // the driver there (0 where nothing is hit).
     std::vector<unsigned char> hit;
     std::vector<float> distance, mean, sigma, lod;
+    // supersample and reference only (empty otherwise): the share of the
+    // pixel's rays that hit a surface, and their mean distance (0 where none
+    // does): the pixels a surface covers in part, whose centre ray may miss.
+    std::vector<float> covered, covered_distance;
     RenderMethod method = RenderMethod::Gaussian;
     int samples = 1;           // rays per pixel
     // gaussian: footprints (pixels or probes) coloured, and how many took

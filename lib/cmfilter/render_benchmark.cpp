@@ -86,11 +86,22 @@ struct Bands {
     double near = 0, horizon = 0;  // distance < near: near band; >= horizon: horizon band
 };
 
+// The distance at which pixel p of the reference sees a surface: the mean
+// over its rays that hit one (the pixels a surface covers in part count,
+// even where the centre ray misses), else the centre ray's; none where
+// nothing is seen.
+std::optional<double> surface_distance(const RenderedImage& reference, std::size_t p)
+{
+    if (!reference.covered.empty() && reference.covered[p] > 0) return reference.covered_distance[p];
+    if (reference.hit[p]) return reference.distance[p];
+    return std::nullopt;
+}
+
 Bands distance_bands(const RenderedImage& reference)
 {
-    std::vector<float> d;
+    std::vector<double> d;
     for (std::size_t p = 0; p < reference.hit.size(); ++p)
-        if (reference.hit[p]) d.push_back(reference.distance[p]);
+        if (const auto t = surface_distance(reference, p)) d.push_back(*t);
     Bands b;
     if (d.empty()) return b;
     std::sort(d.begin(), d.end());
@@ -103,13 +114,13 @@ BandedError compare(const RenderedImage& reference, const RenderedImage& image, 
 {
     std::vector<double> all, near, middle, horizon;
     for (std::size_t p = 0; p < reference.hit.size(); ++p) {
-        if (!reference.hit[p]) continue;
+        const auto t = surface_distance(reference, p);
+        if (!t) continue;
         const Rgb a{reference.rgb[3 * p], reference.rgb[3 * p + 1], reference.rgb[3 * p + 2]};
         const Rgb b{image.rgb[3 * p], image.rgb[3 * p + 1], image.rgb[3 * p + 2]};
         const double e = ciede2000_linear_rgb(a, b);
         all.push_back(e);
-        const double t = reference.distance[p];
-        (t < bands.near ? near : t < bands.horizon ? middle : horizon).push_back(e);
+        (*t < bands.near ? near : *t < bands.horizon ? middle : horizon).push_back(e);
     }
     return {summarize_errors(all), summarize_errors(near), summarize_errors(middle), summarize_errors(horizon)};
 }
@@ -120,6 +131,14 @@ void average_in(RenderedImage& sum, const RenderedImage& round, int rounds)
 {
     const float w = 1.0f / static_cast<float>(rounds + 1);
     for (std::size_t i = 0; i < sum.rgb.size(); ++i) sum.rgb[i] += w * (round.rgb[i] - sum.rgb[i]);
+    for (std::size_t p = 0; p < sum.covered.size(); ++p) {
+        // The mean distance over every round's hitting rays.
+        const float before = sum.covered[p] * static_cast<float>(rounds), added = round.covered[p];
+        if (before + added > 0)
+            sum.covered_distance[p] = (before * sum.covered_distance[p] + added * round.covered_distance[p]) /
+                                      (before + added);
+        sum.covered[p] += w * (round.covered[p] - sum.covered[p]);
+    }
     sum.samples += round.samples;
     sum.seconds += round.seconds;
 }
@@ -183,7 +202,7 @@ Expected<SceneBench> bench_scene(const Scene& scene, std::vector<SurfaceMaterial
     const Bands bands = distance_bands(reference);
     bench.width = reference.width;
     bench.height = reference.height;
-    for (unsigned char h : reference.hit) bench.pixels_hit += h;
+    for (std::size_t p = 0; p < reference.hit.size(); ++p) bench.pixels_hit += surface_distance(reference, p) ? 1 : 0;
     bench.near_distance = bands.near;
     bench.horizon_distance = bands.horizon;
     bench.reference_seconds = reference.seconds;

@@ -1,10 +1,12 @@
 // Speed against accuracy for `cmfilter bench` (docs/render.md): one scene
 // rendered by every method and configuration, each timed (the pixel loop's
 // wall time, fastest of `repeats`) and compared per pixel (CIEDE2000) with a
-// reference of `reference_samples` rays per pixel, over the pixels whose
-// centre ray hits a surface, and per distance band: the hit pixels split in
-// three equal-count bands by the centre ray's distance (near, middle,
-// horizon). A second reference with other seeds measures how repeatable the
+// reference of `reference_samples` rays per pixel, over the pixels a
+// surface covers at least in part (any of the reference's rays hits one,
+// or its centre ray does: silhouette and horizon pixels count even where
+// the centre ray misses), and per distance band: those pixels split in three
+// equal-count bands by the mean distance of the reference's rays that hit
+// (near, middle, horizon). A second reference with other seeds measures how repeatable the
 // reference itself is: the two must differ by at most `reference_repeat`
 // mean CIEDE2000 (0.2). Where a scene's driver is too fine for that at
 // `reference_samples` rays (a noise far below the pixel), both references
@@ -80,7 +82,7 @@ struct BenchRow {
 struct SceneBench {
     std::string scene;
     int width = 0, height = 0;
-    std::size_t pixels_hit = 0;
+    std::size_t pixels_hit = 0;  // the pixels compared: a surface covers them at least in part
     double near_distance = 0, horizon_distance = 0;  // band limits: the hit distances' terciles
     double reference_seconds = 0;  // the reference's rounds together
     int reference_samples = 0;     // rays per pixel of the reference, all rounds together

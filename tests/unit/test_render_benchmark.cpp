@@ -8,6 +8,7 @@
 
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -90,4 +91,50 @@ TEST_CASE("bench refuses a negative reference tolerance and a cap below one roun
     options.reference_repeat = 0.2;
     options.max_reference_samples = kReferenceSamples - 1;
     CHECK_FALSE(bench_scene(s.scene, s.materials, options));
+}
+
+TEST_CASE("bench compares the pixels a surface covers in part: the horizon row, whose centre rays miss")
+{
+    // A ground plane seen from 1.5 units up, looking 0.6 down over 10: the
+    // horizon is the image row y_h = H/2 - (H/2) tan(pitch) / tan(fov/2)
+    // (y down, pixel rows [k, k + 1)), worked out here from the camera alone.
+    const int w = 40, h = 27;
+    Scene scene;
+    scene.path = "horizon-plane";
+    scene.camera = cmfilter_test::make_scene_camera({0, 1.5, 0}, {0, 0.9, 10}, {0, 1, 0}, 50, w, h);
+    scene.light.direction = normalize(Vec3{0.4, 1, -0.3});
+    scene.background = {0.55, 0.65, 0.8};
+    Surface plane;
+    plane.mapping.u_axis = {0.5, 0, 0};
+    plane.mapping.v_axis = {0, 0, 0.5};
+    scene.surfaces.push_back(plane);
+    std::vector<SurfaceMaterial> materials;
+    materials.push_back(cmfilter_test::terrain_fbm_material());
+
+    const double kPi = 3.14159265358979323846;
+    const double y_h = h / 2.0 - (h / 2.0) * (0.6 / 10) / std::tan(25 * kPi / 180);
+    const int row = static_cast<int>(std::floor(y_h));
+    const double below = row + 1 - y_h;  // the horizon row's share below the line
+    REQUIRE(below > 0.1);
+    REQUIRE(below < 0.5);  // its centre ray misses: the row would not count by centre rays alone
+
+    RenderOptions ro;
+    ro.method = RenderMethod::Reference;
+    auto reference = render(scene, materials, ro);
+    REQUIRE(reference);
+    for (int x = 0; x < w; ++x) {
+        const auto p = static_cast<std::size_t>(row * w + x);
+        CHECK(reference->hit[p] == 0);
+        CHECK(std::abs(reference->covered[p] - below) <= 1.0 / 32);  // 32 x 32 jittered rows
+        CHECK(reference->covered[static_cast<std::size_t>((row - 1) * w + x)] == 0);
+        CHECK(reference->covered[static_cast<std::size_t>((row + 1) * w + x)] == 1);
+    }
+
+    BenchOptions options;
+    options.configurations = {BenchConfiguration{RenderMethod::Naive}};
+    options.repeats = 1;
+    auto bench = bench_scene(scene, materials, options);
+    REQUIRE(bench);
+    // Every row from the horizon's down, the horizon row included.
+    CHECK(bench->pixels_hit == static_cast<std::size_t>((h - row) * w));
 }
