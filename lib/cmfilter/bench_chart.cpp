@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 namespace cmfilter {
@@ -40,7 +41,7 @@ std::string bench_chart_script(const SceneBench& bench, const std::string& data_
         return r.configuration.method == RenderMethod::Exact;
     });
     std::ostringstream s;
-    s << "set terminal pngcairo size 900,650 font 'sans,11'\n"
+    s << "set terminal pngcairo size 900,760 font 'sans,11'\n"
       << "set output " << quoted(png_path) << "\n"
       << "set title " << quoted(std::filesystem::path(bench.scene).filename().string() + ", " +
                                 std::to_string(bench.width) + " x " + std::to_string(bench.height) +
@@ -49,8 +50,8 @@ std::string bench_chart_script(const SceneBench& bench, const std::string& data_
                                 ")")
       << " noenhanced\n"
       << "set xrange [*:" << 2 * bench.reference_seconds << "]\n"
-      << "set logscale xy\nset grid\nset key inside left bottom box opaque noenhanced font 'sans,10'\n"
-      << "set xlabel 'render time (s, pixel loop)'\nset ylabel 'mean CIEDE2000 over hit pixels'\n"
+      << "set logscale xy\nset grid\nset bmargin 9\nset key outside below center horizontal maxcols 2 box noenhanced font 'sans,10'\n"
+      << "set xlabel 'render time (s, pixel loop)' offset 0,0.4\nset ylabel 'mean CIEDE2000 over the pixels a surface covers'\n"
       << "set datafile separator '\\t'\n"
       << "set arrow from " << bench.reference_seconds << ", graph 0 to " << bench.reference_seconds
       << ", graph 1 nohead dt 3 lc rgb 'gray40'\n"
@@ -58,11 +59,11 @@ std::string bench_chart_script(const SceneBench& bench, const std::string& data_
       << "f(x) = 1.0\n"
       << "plot " << quoted(data_path) << " using ($1 == 0 ? $3 : 1/0):4 with points pt 9 ps 2 lc rgb 'red' title 'naive', \\\n"
       << (has_exact ? "     '' using ($1 == 6 ? $3 : 1/0):4 with points pt 8 ps 2 lc rgb 'black' title 'exact (texture histograms)', \\\n" : "")
-      << "     '' using ($1 == 1 ? $3 : 1/0):4 with points pt 7 ps 1.6 lc rgb 'blue' title 'gaussian (sqrt sigma spacing)', \\\n"
-      << "     '' using ($1 == 2 ? $3 : 1/0):4 with points pt 5 ps 1.4 lc rgb 'dark-cyan' title 'gaussian (linear sigma spacing)', \\\n"
-      << "     '' using ($1 == 3 ? $3 : 1/0):4 with linespoints pt 13 ps 1.4 lc rgb 'dark-green' title 'supersample (rays per pixel)', \\\n"
-      << "     '' using ($1 == 4 ? $3 : 1/0):4 with points pt 11 ps 1.4 lc rgb 'orange' title 'gaussian 256x256, area / major / minor footprint width', \\\n"
-      << "     '' using ($1 == 5 ? $3 : 1/0):4 with points pt 15 ps 1.4 lc rgb 'purple' title 'gaussian, tolerance tables or small-sigma shortcut', \\\n"
+      << "     '' using ($1 == 1 ? $3 : 1/0):4 with points pt 7 ps 1.6 lc rgb 'blue' title 'gaussian, sqrt sigma spacing', \\\n"
+      << "     '' using ($1 == 2 ? $3 : 1/0):4 with points pt 5 ps 1.4 lc rgb 'dark-cyan' title 'gaussian, linear sigma spacing', \\\n"
+      << "     '' using ($1 == 3 ? $3 : 1/0):4 with linespoints pt 13 ps 1.4 lc rgb 'dark-green' title 'supersample, rays per pixel', \\\n"
+      << "     '' using ($1 == 4 ? $3 : 1/0):4 with points pt 11 ps 1.4 lc rgb 'orange' title 'gaussian 256x256, area / major / minor width', \\\n"
+      << "     '' using ($1 == 5 ? $3 : 1/0):4 with points pt 15 ps 1.4 lc rgb 'purple' title 'gaussian, fitted tables / shortcut', \\\n"
       << "     '' using ($6 == 1 && $5 != $4 ? $3 : 1/0):4:($3 * 0.3):($5 - $4) with vectors nohead lc rgb 'gray60' notitle, \\\n"
       << "     '' using ($6 == 1 ? $3 * 1.3 : 1/0):5:2 with labels offset 0.3,0 left font 'sans,9' notitle, \\\n"
       << "     f(x) with lines dt 2 lc rgb 'black' title 'target 1.0'\n";
@@ -119,11 +120,33 @@ Status write_bench_chart(const SceneBench& bench, const std::string& png_path)
         for (Point& pt : points)
             if (pt.labelled) labelled.push_back(&pt);
         std::sort(labelled.begin(), labelled.end(), [](const Point* a, const Point* b) { return a->error < b->error; });
-        for (std::size_t i = 0; i < labelled.size(); ++i)
-            for (std::size_t j = 0; j < i; ++j)
-                if (std::abs(std::log(labelled[i]->seconds / labelled[j]->seconds)) < 0.9 &&
-                    labelled[i]->label_y < labelled[j]->label_y * 1.18)
-                    labelled[i]->label_y = labelled[j]->label_y * 1.18;
+        // A label's extent in decades of time: the plot is about 790 pixels
+        // wide over the data's decades (to twice the reference's time, rounded
+        // out to whole decades), a character of the labels' font about 6.5.
+        double fastest = bench.reference_seconds;
+        for (const Point& pt : points) fastest = std::min(fastest, pt.seconds);
+        const double decades = std::max(1.0, std::ceil(std::log10(2 * bench.reference_seconds)) -
+                                                 std::floor(std::log10(std::max(fastest, 1e-9))));
+        const double decades_per_char = 7.0 * decades / 760;
+        const auto extent = [&](const Point* pt) {
+            const double start = std::log10(pt->seconds * 1.3);
+            return std::make_pair(start, start + decades_per_char * (static_cast<double>(pt->label.size()) + 1));
+        };
+        // Lower labels stay, higher ones move up, until no two overlap.
+        for (int pass = 0, moved = 1; moved && pass < 100; ++pass) {
+            moved = 0;
+            for (std::size_t i = 0; i < labelled.size(); ++i)
+                for (std::size_t j = 0; j < i; ++j) {
+                    const auto a = extent(labelled[i]), b = extent(labelled[j]);
+                    const double lo = std::min(labelled[i]->label_y, labelled[j]->label_y);
+                    const double hi = std::max(labelled[i]->label_y, labelled[j]->label_y);
+                    if (a.first < b.second && b.first < a.second && hi < lo * 1.18) {
+                        Point* upper = labelled[i]->label_y >= labelled[j]->label_y ? labelled[i] : labelled[j];
+                        upper->label_y = lo * 1.18;
+                        moved = 1;
+                    }
+                }
+        }
         std::ofstream d(data);
         for (const Point& pt : points)
             d << pt.series << "\t" << pt.label << "\t" << pt.seconds << "\t" << pt.error << "\t" << pt.label_y << "\t"

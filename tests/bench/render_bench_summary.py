@@ -18,7 +18,7 @@ def pick(scene, configuration):
 
 
 print("| scene | gaussian mean (near / middle / horizon) | naive mean | naive / gaussian error | gaussian / naive time "
-      "| supersample at gaussian's time | reference time / gaussian | reference repeat |")
+      "| supersample at gaussian's time | reference time / gaussian | reference rays (repeat) |")
 print("|---|---|---:|---:|---:|---|---:|---:|")
 for s in scenes:
     g = pick(s, "gaussian 256x256 sqrt")
@@ -29,11 +29,23 @@ for s in scenes:
     ss.sort(key=lambda r: f(r, "seconds"))
     # The supersample whose time is nearest gaussian's (in log time).
     near = min(ss, key=lambda r: abs(math.log(f(r, "seconds") / f(g, "seconds"))))
-    print("| %s | %.2f (%.2f / %.2f / %.2f) | %.2f | %.2f | %.2f | %s spp: %.2f in %.1fx the time (%.2fx gaussian's error) | %.0f | %.3f |" % (
+    print("| %s | %.2f (%.2f / %.2f / %.2f) | %.2f | %.2f | %.2f | %s spp: %.2f in %.1fx the time (%.2fx gaussian's error) | %.0f | %s (%.3f) |" % (
         os.path.basename(s), f(g, "mean"), f(g, "near_mean"), f(g, "middle_mean"), f(g, "horizon_mean"),
         f(n, "mean"), f(n, "mean") / f(g, "mean"), f(g, "seconds") / f(n, "seconds"),
         near["spp"], f(near, "mean"), f(near, "seconds") / f(g, "seconds"), f(near, "mean") / f(g, "mean"),
-        f(ref, "seconds") / f(g, "seconds"), f(rep, "mean")))
+        f(ref, "seconds") / f(g, "seconds"), ref["spp"], f(rep, "mean")))
+
+# Every gaussian configuration's mean error (bands for the tolerance tables).
+labels = [c for c in dict.fromkeys(r["configuration"] for r in rows if r["method"] == "gaussian")]
+print()
+print("| scene | " + " | ".join(l[len("gaussian "):] for l in labels) + " |")
+print("|---|" + "---:|" * len(labels))
+for s in scenes:
+    cells = []
+    for l in labels:
+        r = [x for x in rows if x["scene"] == s and x["configuration"] == l]
+        cells.append("%.2f" % f(r[0], "mean") if r else "")
+    print("| %s | %s |" % (os.path.splitext(os.path.basename(s))[0], " | ".join(cells)))
 
 # exact, on the scenes it can filter (every driver a texture with at most 256
 # values; bench leaves it out elsewhere).
