@@ -102,7 +102,7 @@ with open(f"{work}/scale-sweep.gp", "w") as g:
     # of the bundled scene's.
     g.write(f'set terminal pngcairo size 1100,500 font ",11"\nset output "{work}/scale-sweep.png"\n'
             'set multiplot layout 1,2 title "Where each method breaks down: the driver made finer (mean CIEDE2000 against the reference)"\n'
-            'set logscale xy 2\nset grid\nset key top left\nset yrange [0.25:32]\n'
+            'set logscale xy 2\nset format x "2^{%L}"\nset grid\nset key top left\nset yrange [0.25:32]\n'
             'set xlabel "mapping scale, x the bundled scene\'s (finer noise to the right)"\n'
             'set ylabel "mean CIEDE2000"\n'
             'set arrow 1 from graph 0, first 1 to graph 1, first 1 nohead dt 2 lc rgb "black"\n')
