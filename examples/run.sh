@@ -56,7 +56,7 @@ done
 "$cmfilter" bench "$scene" --resolution 160x90 --repeats 1 --csv "$out/render/bench.csv" --charts "$out/render" -q
 echo
 echo "bench at 160 x 90 (mean CIEDE2000 against the reference, render seconds):"
-awk -F, 'NR > 1 && $2 != "reference" { printf "  %-32s %8.3f dE00 %10.4f s\n", $2, $11, $10 }' "$out/render/bench.csv"
+awk -F, 'NR > 1 && $2 != "reference" { printf "  %-36s %8.3f dE00 %10.4f s\n", $2, $11, $10 }' "$out/render/bench.csv"
 echo
 echo "example outputs in $out:"
 echo "  tables/*.exr      prefiltered colour-map tables (open with oiiotool --info -v or cmfilter info)"
