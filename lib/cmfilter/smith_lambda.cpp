@@ -1,0 +1,64 @@
+#include "cmfilter/smith_lambda.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace cmfilter {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// erfc(a) e^{a^2}, for a >= 0: the continued fraction where erfc underflows
+// or loses its digits, erfc itself below.
+double scaled_erfc(double a)
+{
+    if (a < 4) return std::erfc(a) * std::exp(a * a);
+    // Lentz's continued fraction of erfc(a) e^{a^2} sqrt(pi) = 1 / (a + (1/2) / (a + 1 / (a + (3/2) / (a + ...)))).
+    double f = a;
+    for (int k = 60; k >= 1; --k) f = a + (0.5 * k) / f;
+    return 1.0 / (f * std::sqrt(kPi));
+}
+
+}  // namespace
+
+double smith_lambda_gaussian_cot(double mu, double sigma_s)
+{
+    if (!(mu >= 0) || std::isinf(mu)) return 0.0;  // theta = 0 (or no direction): nothing masked
+    if (mu == 0) return std::numeric_limits<double>::infinity();
+    if (!(sigma_s > 0)) return 0.0;                  // a flat surface masks nothing below 90 degrees
+    // Eq. 3 with a = mu / (sqrt(2) sigma_s):
+    //   Lambda = (e^{-a^2} / (a sqrt(pi)) - erfc(a)) / 2
+    //          = e^{-a^2} (1 / (a sqrt(pi)) - erfcx(a)) / 2,
+    // the bracket computed as written while it holds digits, and from the
+    // asymptotic series 1/(a sqrt(pi)) (1/(2a^2) - 3/(4a^4) + 15/(8a^6)) beyond.
+    const double a = mu / (std::sqrt(2.0) * sigma_s);
+    if (a > 27) return 0.0;  // e^{-a^2} < 1e-316
+    double bracket;
+    if (a < 8) {
+        bracket = 1.0 / (a * std::sqrt(kPi)) - scaled_erfc(a);
+    } else {
+        const double r = 1.0 / (2 * a * a);
+        bracket = r * (1 - 3 * r + 15 * r * r - 105 * r * r * r) / (a * std::sqrt(kPi));
+    }
+    return std::max(0.0, 0.5 * std::exp(-a * a) * bracket);
+}
+
+double smith_lambda_gaussian(double theta, double sigma_s)
+{
+    if (!(theta > 0)) return 0.0;
+    if (theta >= kPi / 2) return std::numeric_limits<double>::infinity();
+    return smith_lambda_gaussian_cot(1.0 / std::tan(theta), sigma_s);
+}
+
+double mean_visibility(double lambda_o, double lambda_i)
+{
+    const bool inf_o = std::isinf(lambda_o), inf_i = std::isinf(lambda_i);
+    if (inf_o && inf_i) return 0.5;
+    if (inf_i) return 0.0;
+    if (inf_o) return 1.0;
+    return (1 + lambda_o) / (1 + lambda_o + lambda_i);  // eq. 13
+}
+
+}  // namespace cmfilter
