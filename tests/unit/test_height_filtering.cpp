@@ -6,12 +6,15 @@
 // with an inverse normal CDF by bisection; the closed forms of the largest
 // of two and three normals; and the paper's fit as printed.
 #include "cmfilter/height_filtering.h"
+#include "cmfilter/height_moment_table.h"
 #include "cmfilter/smith_lambda.h"
 
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <algorithm>
 #include <limits>
+#include <random>
 #include <vector>
 
 using namespace cmfilter;
@@ -157,4 +160,35 @@ TEST_CASE("the paper's fit is eqs. 17-18 as published")
         CHECK(f.mean == doctest::Approx(0.39 * 0.7 * std::log(4.75 * L + 1)));
         CHECK(f.sigma == doctest::Approx(0.7 / (1 + 0.26 * std::log(1.13 * L + 1))));
     }
+}
+
+TEST_CASE("the height moment table is within 1e-4 of the exact moments up to L = 1e6")
+{
+    auto table = HeightMomentTable::create();
+    REQUIRE(table);
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> log_l(-6, 6);
+    double worst = 0;
+    for (int k = 0; k < 2000; ++k) {
+        const double L = std::pow(10.0, log_l(rng));
+        const HeightMoments got = table->lookup(L, 2.0), exact = exact_height_moments(L, 2.0);
+        // Relative, but absolute (in sigma_h) near a zero mean.
+        worst = std::max(worst, std::abs(got.mean - exact.mean) / std::max(std::abs(exact.mean), 2.0));
+        worst = std::max(worst, std::abs(got.sigma - exact.sigma) / exact.sigma);
+    }
+    CAPTURE(worst);
+    CHECK(worst < 1e-4);
+    // Ends: L = 0 is N(0, sigma_h^2); beyond the last node, the last node.
+    CHECK(std::abs(table->lookup(0, 1).mean) < 1e-9);
+    CHECK(table->lookup(0, 1).sigma == doctest::Approx(1).epsilon(1e-9));
+    CHECK(table->lookup(std::numeric_limits<double>::infinity(), 1).mean == table->lookup(1e6, 1).mean);
+    CHECK(std::isfinite(table->lookup(std::nan(""), 1).mean));
+    // A coarse table misses the bound: the test can fail.
+    HeightMomentTableOptions coarse;
+    coarse.nodes = 16;
+    auto rough = HeightMomentTable::create(coarse);
+    REQUIRE(rough);
+    CHECK(std::abs(rough->lookup(3.3, 1).mean - exact_height_moments(3.3, 1).mean) > 1e-4);
+    coarse.nodes = 1;
+    CHECK_FALSE(HeightMomentTable::create(coarse));
 }
