@@ -1,0 +1,61 @@
+#include "cmfilter/height_colour.h"
+
+#include "cmfilter/gauss_legendre.h"
+#include "cmfilter/normal_quantile.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace cmfilter {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// ln Phi(x), through the complement on the right (see height_filtering.cpp).
+double log_phi(double x)
+{
+    if (x >= 0) return std::log1p(-0.5 * std::erfc(x / std::sqrt(2.0)));
+    return std::log(0.5 * std::erfc(-x / std::sqrt(2.0)));
+}
+
+}  // namespace
+
+Rgb exact_height_colour(const ColorMap& map, double sigma_h, double lambda_sum)
+{
+    if (map.texels.empty()) return {};
+    if (!(sigma_h > 0)) return map.evaluate(0.0);
+    const double L = std::isnan(lambda_sum) ? 0.0 : std::min(std::max(0.0, lambda_sum), 1e100);
+    const double k1 = L + 1;
+    // The heights that carry weight: v = Phi(h / sigma_h)^(L+1) in
+    // [1e-15, 1 - 1e-15] (the upper end through complements: for large L
+    // its u = v^(1/(L+1)) rounds to 1).
+    const double x_lo = normal_quantile(std::exp(std::log(1e-15) / k1));
+    const double x_hi = -normal_quantile(-std::expm1(std::log1p(-1e-15) / k1));
+    // Breakpoints: the map's nodes between them (at most 100000), then
+    // panels no wider than sigma_h / 4, where D_h's density is smooth and
+    // C_h linear.
+    std::vector<double> breaks{sigma_h * x_lo};
+    const double first = std::ceil(map.node_coordinate(sigma_h * x_lo));
+    const double last = std::floor(map.node_coordinate(sigma_h * x_hi));
+    const double stride = std::max(1.0, std::ceil((last - first + 1) / 100000));
+    for (double k = first; k <= last; k += stride) breaks.push_back(map.vmin + (k + 0.5) * map.texel_width());
+    breaks.push_back(sigma_h * x_hi);
+    // D_h in h (eq. 16): (L + 1) Phi(h / sigma_h)^L phi(h / sigma_h) / sigma_h.
+    const auto weighted = [&](double h) {
+        const double x = h / sigma_h;
+        const double density = std::exp(std::log(k1) + L * log_phi(x) - 0.5 * x * x) / (sigma_h * std::sqrt(2 * kPi));
+        return density * map.evaluate(h);
+    };
+    Rgb sum;
+    for (std::size_t i = 0; i + 1 < breaks.size(); ++i) {
+        const double a = breaks[i], b = breaks[i + 1];
+        if (!(b > a)) continue;
+        const int panels = static_cast<int>(std::min(64.0, std::ceil((b - a) / (0.25 * sigma_h))));
+        sum += gauss_legendre_8(weighted, a, b, std::max(1, panels));
+    }
+    return sum;
+}
+
+}  // namespace cmfilter
