@@ -1,7 +1,7 @@
 #include "cmfilter/height_colour.h"
 
 #include "cmfilter/gauss_legendre.h"
-#include "cmfilter/normal_quantile.h"
+#include "cmfilter/normal_distribution.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,13 +12,6 @@ namespace cmfilter {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-// ln Phi(x), through the complement on the right (see height_filtering.cpp).
-double log_phi(double x)
-{
-    if (x >= 0) return std::log1p(-0.5 * std::erfc(x / std::sqrt(2.0)));
-    return std::log(0.5 * std::erfc(-x / std::sqrt(2.0)));
-}
 
 }  // namespace
 
@@ -45,7 +38,7 @@ Rgb exact_height_colour(const ColorMap& map, double sigma_h, double lambda_sum)
     // D_h in h (eq. 16): (L + 1) Phi(h / sigma_h)^L phi(h / sigma_h) / sigma_h.
     const auto weighted = [&](double h) {
         const double x = h / sigma_h;
-        const double density = std::exp(std::log(k1) + L * log_phi(x) - 0.5 * x * x) / (sigma_h * std::sqrt(2 * kPi));
+        const double density = std::exp(std::log(k1) + L * log_normal_cdf(x) - 0.5 * x * x) / (sigma_h * std::sqrt(2 * kPi));
         return density * map.evaluate(h);
     };
     Rgb sum;

@@ -1,6 +1,7 @@
 #include "cmfilter/height_filtering.h"
 
 #include "cmfilter/gauss_legendre.h"
+#include "cmfilter/normal_distribution.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,18 +11,6 @@ namespace cmfilter {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-// ln Phi(x) for the standard normal CDF, accurate in both tails: the
-// complement through log1p on the right, erfc itself on the left, the
-// Mills-ratio series Phi(x) ~ phi(x) / |x| (1 - 1/x^2 + 3/x^4 - 15/x^6)
-// where erfc underflows.
-double log_normal_cdf(double x)
-{
-    if (x >= 0) return std::log1p(-0.5 * std::erfc(x / std::sqrt(2.0)));
-    if (x > -37) return std::log(0.5 * std::erfc(-x / std::sqrt(2.0)));
-    const double r = 1.0 / (x * x);
-    return -0.5 * x * x - 0.5 * std::log(2 * kPi) - std::log(-x) + std::log(1 - r + 3 * r * r - 15 * r * r * r);
-}
 
 // d/dx ln Phi(x) = phi(x) / Phi(x).
 double normal_hazard_left(double x)

@@ -4,7 +4,7 @@
 // E[ramp(h)] = int (1 - Phi(t / sigma_h)^(L+1)) dt / (p1 - p0) over the
 // ramp, by the trapezoid rule in t.
 #include "cmfilter/height_colour.h"
-#include "cmfilter/normal_quantile.h"
+#include "cmfilter/normal_distribution.h"
 
 #include <doctest/doctest.h>
 

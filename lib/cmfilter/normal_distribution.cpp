@@ -1,9 +1,18 @@
-#include "cmfilter/normal_quantile.h"
+#include "cmfilter/normal_distribution.h"
 
 #include <cmath>
 #include <limits>
 
 namespace cmfilter {
+
+double log_normal_cdf(double x)
+{
+    if (x >= 0) return std::log1p(-0.5 * std::erfc(x / std::sqrt(2.0)));
+    if (x > -37) return std::log(0.5 * std::erfc(-x / std::sqrt(2.0)));
+    const double r = 1.0 / (x * x);
+    return -0.5 * x * x - 0.5 * std::log(2 * 3.14159265358979323846) - std::log(-x) +
+           std::log(1 - r + 3 * r * r - 15 * r * r * r);
+}
 
 double normal_quantile(double p)
 {
