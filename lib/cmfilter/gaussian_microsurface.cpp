@@ -20,7 +20,12 @@ Expected<GaussianMicrosurface> GaussianMicrosurface::create(const GaussianMicros
     if (!(o.min_wavelength > 0) || !std::isfinite(o.max_wavelength) || !(o.max_wavelength >= o.min_wavelength))
         return bad_input("microsurface wavelengths [" + std::to_string(o.min_wavelength) + ", " +
                          std::to_string(o.max_wavelength) + "] are out of range (expected 0 < min <= max, finite)");
+    if (!(o.tile >= 0) || !std::isfinite(o.tile) || (o.tile > 0 && o.tile < o.max_wavelength))
+        return bad_input("microsurface tile " + std::to_string(o.tile) +
+                         " is out of range (expected 0, not periodic, or a period >= max_wavelength " +
+                         std::to_string(o.max_wavelength) + ")");
     GaussianMicrosurface s;
+    s.tile_ = o.tile;
     std::uint64_t state = o.seed;
     splitmix64(state);
     const double lo = std::log(1.0 / o.max_wavelength), hi = std::log(1.0 / o.min_wavelength);
@@ -30,7 +35,14 @@ Expected<GaussianMicrosurface> GaussianMicrosurface::create(const GaussianMicros
         const double f = std::exp(lo + (hi - lo) * unit_interval(splitmix64(state)));
         const double angle = kTwoPi * unit_interval(splitmix64(state));
         const double phase = kTwoPi * unit_interval(splitmix64(state));
-        s.cosines_.push_back({amplitude, f * std::cos(angle), f * std::sin(angle), phase});
+        double fx = f * std::cos(angle), fy = f * std::sin(angle);
+        if (o.tile > 0) {
+            // The nearest lattice frequency (i, j) / tile other than 0.
+            fx = std::round(fx * o.tile) / o.tile;
+            fy = std::round(fy * o.tile) / o.tile;
+            if (fx == 0 && fy == 0) (std::abs(std::cos(angle)) >= std::abs(std::sin(angle)) ? fx : fy) = 1.0 / o.tile;
+        }
+        s.cosines_.push_back({amplitude, fx, fy, phase});
     }
     s.sigma_h_ = o.sigma_h;
     return s;

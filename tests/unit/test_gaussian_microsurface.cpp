@@ -85,3 +85,33 @@ TEST_CASE("microsurface refuses bad options, naming them")
     CHECK(flat->height(0.3, 0.4) == 0);
     CHECK(flat->sigma_s(1.0) == 0);
 }
+
+TEST_CASE("a microsurface with a tile repeats with that period and keeps its measured statistics")
+{
+    GaussianMicrosurfaceOptions o;
+    o.sigma_h = 0.04;
+    o.min_wavelength = 0.05;
+    o.max_wavelength = 0.4;
+    o.tile = 1.6;
+    auto s = GaussianMicrosurface::create(o);
+    REQUIRE(s);
+    CHECK(s->tile() == 1.6);
+    for (double x : {0.0, 0.37, 1.11})
+        for (double y : {0.0, 0.52}) {
+            CHECK(s->height(x + 1.6, y) == doctest::Approx(s->height(x, y)).epsilon(1e-9));
+            CHECK(s->height(x, y - 3.2) == doctest::Approx(s->height(x, y)).epsilon(1e-9));
+        }
+    // Heights measured over a grid of one tile (exact for a lattice spectrum).
+    const int n = 256;
+    double h2 = 0;
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const double h = s->height(1.6 * i / n, 1.6 * j / n);
+            h2 += h * h;
+        }
+    CHECK(std::sqrt(h2 / (n * n)) == doctest::Approx(0.04).epsilon(0.03));
+    o.tile = 0.3;  // shorter than the longest wavelength
+    auto bad = GaussianMicrosurface::create(o);
+    REQUIRE_FALSE(bad);
+    CHECK(bad.error().message.find("tile") != std::string::npos);
+}
