@@ -1,0 +1,41 @@
+#include "cmfilter/microsurface_footprint.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cmfilter {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+double sinc(double x) { return std::fabs(x) < 1e-6 ? 1.0 - x * x / 6.0 : std::sin(x) / x; }
+
+}  // namespace
+
+double MicrosurfaceFootprint::sigma_s(double azimuth) const
+{
+    const double c = std::cos(azimuth), s = std::sin(azimuth);
+    return std::sqrt(std::max(0.0, c * c * slope_xx + 2 * c * s * slope_xy + s * s * slope_yy));
+}
+
+MicrosurfaceFootprint filter_microsurface(const GaussianMicrosurface& surface, double u, double v, double e1u,
+                                          double e1v, double e2u, double e2v)
+{
+    MicrosurfaceFootprint out;
+    double variance = 0;
+    for (const GaussianMicrosurface::Cosine& k : surface.cosines()) {
+        const double s = sinc(kPi * (k.fx * e1u + k.fy * e1v)) * sinc(kPi * (k.fx * e2u + k.fy * e2v));
+        out.mean_height += s * k.amplitude * std::cos(2 * kPi * (k.fx * u + k.fy * v) + k.phase);
+        const double unresolved = 0.5 * k.amplitude * k.amplitude * (1 - s * s);
+        variance += unresolved;
+        const double w = unresolved * 4 * kPi * kPi;
+        out.slope_xx += w * k.fx * k.fx;
+        out.slope_xy += w * k.fx * k.fy;
+        out.slope_yy += w * k.fy * k.fy;
+    }
+    out.sigma_h = std::sqrt(std::max(0.0, variance));
+    return out;
+}
+
+}  // namespace cmfilter
