@@ -56,20 +56,15 @@ double smoothstep(double x)
 // t between keys k and k+1: c(t) = c_k + (c_{k+1} - c_k) * S((t - t_k) /
 // (t_{k+1} - t_k)), with S(x) = 3x^2 - 2x^3, blended in encoded space.
 // ---------------------------------------------------------------------------
-EncodedColor terrain(int i)
+struct Key {
+    double position;
+    EncodedColor color;
+};
+
+// Keys blended with smoothstep between neighbours, texel i at t = i / 255.
+template <std::size_t N>
+EncodedColor keyed(const std::array<Key, N>& keys, int i)
 {
-    struct Key {
-        double position;
-        EncodedColor color;
-    };
-    static const std::array<Key, 6> keys = {{
-        {0.00, {10, 30, 90}},     // deep water
-        {0.30, {40, 120, 190}},   // shallow water
-        {0.40, {225, 205, 145}},  // sand
-        {0.55, {70, 150, 60}},    // grass
-        {0.80, {125, 110, 95}},   // rock
-        {1.00, {250, 250, 250}},  // snow
-    }};
     const double t = static_cast<double>(i) / (kTexelCount - 1);
     for (std::size_t k = 0; k + 1 < keys.size(); ++k) {
         const Key& lo = keys[k];
@@ -80,6 +75,44 @@ EncodedColor terrain(int i)
         }
     }
     return keys.back().color;
+}
+
+EncodedColor terrain(int i)
+{
+    static const std::array<Key, 6> keys = {{
+        {0.00, {10, 30, 90}},     // deep water
+        {0.30, {40, 120, 190}},   // shallow water
+        {0.40, {225, 205, 145}},  // sand
+        {0.55, {70, 150, 60}},    // grass
+        {0.80, {125, 110, 95}},   // rock
+        {1.00, {250, 250, 250}},  // snow
+    }};
+    return keyed(keys, i);
+}
+
+// ---------------------------------------------------------------------------
+// sand-snow.png: a colour map over microsurface heights (laid over
+// [-3 sigma_h, 3 sigma_h] in the bundled scenes): damp soil in the hollows,
+// sand, rock, and snow on the crests above a sharp snow line. Key colours
+// (sRGB-encoded) at positions t, blended as terrain.png's:
+//   t = 0.00 damp soil ( 60,  45,  35)
+//   t = 0.35 sand      (205, 175, 115)
+//   t = 0.55 rock      (115, 105,  95)
+//   t = 0.62 rock      (115, 105,  95)
+//   t = 0.68 snow      (245, 248, 255)
+//   t = 1.00 snow      (250, 250, 255)
+// ---------------------------------------------------------------------------
+EncodedColor sand_snow(int i)
+{
+    static const std::array<Key, 6> keys = {{
+        {0.00, {60, 45, 35}},     // damp soil
+        {0.35, {205, 175, 115}},  // sand
+        {0.55, {115, 105, 95}},   // rock
+        {0.62, {115, 105, 95}},   // rock
+        {0.68, {245, 248, 255}},  // snow line
+        {1.00, {250, 250, 255}},  // snow
+    }};
+    return keyed(keys, i);
 }
 
 // ---------------------------------------------------------------------------
@@ -228,7 +261,7 @@ int main(int argc, char** argv)
     const std::vector<ColorMapDefinition> maps = {
         {"terrain.png", terrain},         {"stripes.png", stripes},
         {"step.png", step},               {"narrow-band.png", narrow_band},
-        {"hue-ramp.png", hue_ramp},
+        {"hue-ramp.png", hue_ramp},       {"sand-snow.png", sand_snow},
     };
     for (const ColorMapDefinition& map : maps) {
         const std::string error = write_png_atomically(output_directory / map.file_name, evaluate(map));

@@ -167,6 +167,17 @@ Expected<DriverSigmaRange> largest_surface_sigma(const Scene& scene, std::size_t
         return bad_input(scene.path + ": surface " + std::to_string(surface) + " does not exist (the scene has " +
                          std::to_string(scene.surfaces.size()) + ")");
     const DriverSource& driver = scene.surfaces[surface].material.driver;
+    if (const auto& micro = scene.surfaces[surface].material.microsurface) {
+        // D_h's sigma never exceeds the microsurface's sigma_h (eq. 18).
+        if (!(micro->sigma_h > 0))
+            return bad_input(scene.path + ": /surfaces/" + std::to_string(surface) +
+                             "/material/microsurface/sigma_h: a flat microsurface (sigma_h 0) has no sigma range");
+        DriverSigmaRange out;
+        out.sigma_max = micro->sigma_h;
+        out.kind = "microsurface";
+        out.how = "the microsurface's sigma_h (the height filtering distribution is never wider)";
+        return out;
+    }
     Expected<DriverSigmaRange> range = [&]() -> Expected<DriverSigmaRange> {
         switch (driver.kind) {
         case DriverKind::Noise:

@@ -18,7 +18,9 @@
 //       noise driver's sigma table as above, or, without one, the noise's
 //       global sigma (its standard deviation over the plane: what the
 //       largest footprints approach), taken at the upper end of its 95%
-//       confidence interval (measure_global_stats with bake-noise's defaults).
+//       confidence interval (measure_global_stats with bake-noise's defaults);
+//       a microsurface's sigma_h (its height filtering distribution, eqs.
+//       15-18, is never wider).
 #pragma once
 
 #include "cmfilter/error.h"

@@ -15,10 +15,10 @@ constexpr double kPi = 3.14159265358979323846;
 
 }  // namespace
 
-Rgb exact_height_colour(const ColorMap& map, double sigma_h, double lambda_sum)
+Rgb exact_height_colour(const ColorMap& map, double sigma_h, double lambda_sum, double offset)
 {
     if (map.texels.empty()) return {};
-    if (!(sigma_h > 0)) return map.evaluate(0.0);
+    if (!(sigma_h > 0)) return map.evaluate(offset);
     const double L = std::isnan(lambda_sum) ? 0.0 : std::min(std::max(0.0, lambda_sum), 1e100);
     const double k1 = L + 1;
     // The heights that carry weight: v = Phi(h / sigma_h)^(L+1) in
@@ -30,16 +30,16 @@ Rgb exact_height_colour(const ColorMap& map, double sigma_h, double lambda_sum)
     // panels no wider than sigma_h / 4, where D_h's density is smooth and
     // C_h linear.
     std::vector<double> breaks{sigma_h * x_lo};
-    const double first = std::ceil(map.node_coordinate(sigma_h * x_lo));
-    const double last = std::floor(map.node_coordinate(sigma_h * x_hi));
+    const double first = std::ceil(map.node_coordinate(offset + sigma_h * x_lo));
+    const double last = std::floor(map.node_coordinate(offset + sigma_h * x_hi));
     const double stride = std::max(1.0, std::ceil((last - first + 1) / 100000));
-    for (double k = first; k <= last; k += stride) breaks.push_back(map.vmin + (k + 0.5) * map.texel_width());
+    for (double k = first; k <= last; k += stride) breaks.push_back(map.vmin + (k + 0.5) * map.texel_width() - offset);
     breaks.push_back(sigma_h * x_hi);
     // D_h in h (eq. 16): (L + 1) Phi(h / sigma_h)^L phi(h / sigma_h) / sigma_h.
     const auto weighted = [&](double h) {
         const double x = h / sigma_h;
         const double density = std::exp(std::log(k1) + L * log_normal_cdf(x) - 0.5 * x * x) / (sigma_h * std::sqrt(2 * kPi));
-        return density * map.evaluate(h);
+        return density * map.evaluate(h + offset);
     };
     Rgb sum;
     for (std::size_t i = 0; i + 1 < breaks.size(); ++i) {

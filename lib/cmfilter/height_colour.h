@@ -16,7 +16,9 @@
 
 namespace cmfilter {
 
-// sigma_h >= 0 (0: C_h(0)); L >= 0 (NaN reads as 0, beyond 1e100 as 1e100).
-Rgb exact_height_colour(const ColorMap& map, double sigma_h, double lambda_sum);
+// sigma_h >= 0 (0: C_h(offset)); L >= 0 (NaN reads as 0, beyond 1e100 as
+// 1e100). The heights are offset by `offset` (a resolved mean height,
+// microsurface_footprint.h): C_h is read at offset + h for h ~ D_h.
+Rgb exact_height_colour(const ColorMap& map, double sigma_h, double lambda_sum, double offset = 0);
 
 }  // namespace cmfilter

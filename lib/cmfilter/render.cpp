@@ -3,6 +3,8 @@
 #include "cmfilter/anisotropic_probes.h"
 #include "cmfilter/camera.h"
 #include "cmfilter/gaussian_albedo.h"
+#include "cmfilter/height_filtered_albedo.h"
+#include "cmfilter/microsurface_footprint.h"
 #include "cmfilter/noise_lattice.h"
 #include "cmfilter/parallel_for.h"
 #include "cmfilter/pixel_coverage.h"
@@ -24,6 +26,7 @@ const char* to_string(RenderMethod method)
     switch (method) {
     case RenderMethod::Naive: return "naive";
     case RenderMethod::Gaussian: return "gaussian";
+    case RenderMethod::GaussianExact: return "gaussian-exact";
     case RenderMethod::Exact: return "exact";
     case RenderMethod::Supersample: return "supersample";
     case RenderMethod::Reference: return "reference";
@@ -33,13 +36,16 @@ const char* to_string(RenderMethod method)
 
 Expected<RenderMethod> parse_render_method(const std::string& text)
 {
-    for (RenderMethod m : {RenderMethod::Naive, RenderMethod::Gaussian, RenderMethod::Exact, RenderMethod::Supersample,
-                           RenderMethod::Reference})
+    for (RenderMethod m : {RenderMethod::Naive, RenderMethod::Gaussian, RenderMethod::GaussianExact, RenderMethod::Exact,
+                           RenderMethod::Supersample, RenderMethod::Reference})
         if (text == to_string(m)) return m;
-    return bad_input("method '" + text + "' is unknown (expected naive, gaussian, exact, supersample or reference)");
+    return bad_input("method '" + text +
+                     "' is unknown (expected naive, gaussian, gaussian-exact, exact, supersample or reference)");
 }
 
 namespace {
+
+constexpr double kPi = 3.14159265358979323846;
 
 Rgb shade(const Rgb& albedo, const Vec3& normal, const SceneLight& light)
 {
@@ -117,6 +123,72 @@ double driver_value(const SurfaceMaterial& m, double u, double v)
     return m.texture ? m.texture->value(u, v) : m.noise->noise()(u, v);
 }
 
+// How a one-ray method represents a microsurface's height filtering
+// distribution (height_filtered_albedo.h).
+HeightRepresentation height_representation(RenderMethod method)
+{
+    switch (method) {
+    case RenderMethod::Naive: return HeightRepresentation::Naive;
+    case RenderMethod::GaussianExact: return HeightRepresentation::ExactMoments;
+    case RenderMethod::Exact: return HeightRepresentation::Exact;
+    default: return HeightRepresentation::PaperFit;
+    }
+}
+
+// The view and light directions in a microsurface plane's frame: its unit
+// mapping axes and the normal facing the viewer (scene.h).
+HeightDirections height_directions(const Surface& surface, const SurfaceHit& h, const Vec3& view, const Vec3& light)
+{
+    const Vec3 x = normalize(surface.mapping.u_axis), y = normalize(surface.mapping.v_axis);
+    HeightDirections d;
+    const auto angles = [&](const Vec3& w, double& theta, double& phi) {
+        const double c = dot(w, h.normal);
+        theta = c > 0 ? std::acos(std::min(1.0, c)) : 0.5 * kPi;
+        phi = std::atan2(dot(w, y), dot(w, x));
+    };
+    angles(view, d.theta_o, d.phi_o);
+    angles(light, d.theta_i, d.phi_i);
+    return d;
+}
+
+// A microsurface over a hit's footprint: the parallelogram of the ray
+// differentials cut along its longer edge into up to max_probes pieces
+// (as anisotropic_probes.h does), each filtered exactly
+// (microsurface_footprint.h); the albedos and AOVs averaged.
+struct MicrosurfaceFiltered {
+    Rgb albedo;
+    double mean = 0, sigma = 0, lod = 0;
+};
+
+MicrosurfaceFiltered filter_microsurface_hit(const SurfaceMaterial& m, const SurfaceHit& h,
+                                             const HeightDirections& directions, HeightRepresentation representation,
+                                             int max_probes, const HeightMomentTable& table, AlbedoCounts& counts)
+{
+    double au = h.du_dx, av = h.dv_dx, bu = h.du_dy, bv = h.dv_dy;
+    if (std::hypot(au, av) < std::hypot(bu, bv)) {
+        std::swap(au, bu);
+        std::swap(av, bv);
+    }
+    const double major = std::hypot(au, av), minor = std::hypot(bu, bv);
+    const int count = minor > 0 ? static_cast<int>(std::min<double>(std::max(1, max_probes), std::ceil(major / minor)))
+                                : std::max(1, max_probes);
+    MicrosurfaceFiltered out;
+    for (int j = 0; j < count; ++j) {
+        const double o = (j + 0.5) / count - 0.5;
+        const MicrosurfaceFootprint f = filter_microsurface(*m.microsurface, h.u + o * au, h.v + o * av, au / count,
+                                                            av / count, bu, bv);
+        const HeightAlbedo a = height_filtered_albedo(m, f, directions, representation, table, counts);
+        out.albedo += a.albedo;
+        out.mean += a.mean;
+        out.sigma += a.sigma;
+    }
+    out.albedo = (1.0 / count) * out.albedo;
+    out.mean /= count;
+    out.sigma /= count;
+    out.lod = std::log2(std::max({major / count, minor, 1e-300}));
+    return out;
+}
+
 // The supersampled methods read f at each ray's hit from a texture's level
 // 0, which a moments driver whose recorded driver is gone lacks.
 Status check_level0(const std::vector<SurfaceMaterial>& materials, RenderMethod method)
@@ -143,13 +215,15 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
         return bad_input("--spp " + std::to_string(options.samples) + " is out of range (expected 1 to " +
                          std::to_string(kMaxSamples) + ")");
     for (const SurfaceMaterial& m : materials)
-        if (!m.noise && !m.texture) return bad_input("render: every surface needs a driver (a noise or a texture)");
+        if (!m.noise && !m.texture && !m.microsurface)
+            return bad_input("render: every surface needs a driver (a noise or a texture) or a microsurface");
     if (auto st = check_level0(materials, options.method); !st) return st.error();
     // The exact method: C0 at each material's distinct driver values.
     std::vector<std::vector<Rgb>> bin_colors(materials.size());
     if (options.method == RenderMethod::Exact)
         for (std::size_t i = 0; i < materials.size(); ++i) {
             const SurfaceMaterial& m = materials[i];
+            if (m.microsurface) continue;  // <C_h, D_h> exactly (height_colour.h)
             if (!m.texture)
                 return bad_input("render: surface " + std::to_string(i) + ": exact needs a texture driver with at most " +
                                  std::to_string(kHistogramMaxValues) +
@@ -161,6 +235,9 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
         }
     auto camera = Camera::create(scene.camera);
     if (!camera) return camera.error();
+    // D_h's exact moments for gaussian-exact (height_moment_table.h).
+    auto height_table = HeightMomentTable::create();
+    if (!height_table) return height_table.error();
 
     RenderedImage image;
     image.width = camera->width();
@@ -202,7 +279,18 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
             FilteredHit out;
             const SurfaceHit& h = hit.hit;
             const SurfaceMaterial& m = materials[static_cast<std::size_t>(hit.surface)];
-            if (m.texture) {
+            if (m.microsurface) {
+                // Height-correlated colour (sec. 5.1), masked and shadowed.
+                const HeightDirections directions = height_directions(
+                    scene.surfaces[static_cast<std::size_t>(hit.surface)], h, normalize(scene.camera.position - h.point),
+                    scene.light.direction);
+                const MicrosurfaceFiltered f = filter_microsurface_hit(
+                    m, h, directions, height_representation(options.method), options.max_probes, *height_table, counts);
+                out.mean = f.mean;
+                out.sigma = f.sigma;
+                out.lod = f.lod;
+                if (!supersampled) out.colour = shade(f.albedo, h.normal, scene.light);
+            } else if (m.texture) {
                 // A texture: its pyramids looked up by probes along the
                 // footprint's major edge (texture_footprint.h).
                 const TextureFootprint f =
@@ -243,7 +331,7 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
                 out.lod = f.lod;
                 if (options.method == RenderMethod::Naive)
                     out.colour = shade(m.map.evaluate(f.mean), h.normal, scene.light);
-                else if (options.method == RenderMethod::Gaussian)
+                else if (options.method == RenderMethod::Gaussian || options.method == RenderMethod::GaussianExact)
                     out.colour = shade(gaussian_albedo(m, f.mean, f.sigma, counts), h.normal, scene.light);
             }
             return out;

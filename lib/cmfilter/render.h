@@ -45,7 +45,7 @@
 
 namespace cmfilter {
 
-enum class RenderMethod { Naive, Gaussian, Exact, Supersample, Reference };
+enum class RenderMethod { Naive, Gaussian, GaussianExact, Exact, Supersample, Reference };
 const char* to_string(RenderMethod method);
 Expected<RenderMethod> parse_render_method(const std::string& text);
 

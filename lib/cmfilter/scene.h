@@ -7,6 +7,7 @@
 #pragma once
 
 #include "cmfilter/color.h"
+#include "cmfilter/gaussian_microsurface.h"
 #include "cmfilter/vec3.h"
 #include "cmfilter/wrap_mode.h"
 
@@ -78,9 +79,21 @@ struct DriverSource {
     std::string image_path;
 };
 
+// A material colours its surface by a driver (colormap = C0 of the driver's
+// values) or by the heights of a Gaussian microsurface (sec. 5.1; colormap =
+// C_h over heights, masked towards the viewer and shadowed towards the
+// light). A microsurface lives on a plane whose planar mapping is a scaled
+// isometry (u_axis and v_axis perpendicular, of equal length k, in the
+// plane): its wavelengths and heights are in texture units, and it displaces
+// the plane along its normal by h / k scene units.
+inline constexpr int kMaxMicrosurfaceCosines = 4096;
+// A scene microsurface's default period, in longest wavelengths.
+inline constexpr double kMicrosurfaceTileWavelengths = 8;
+
 struct Material {
     ColorMapSource colormap;
-    DriverSource driver;
+    DriverSource driver;  // unused with a microsurface
+    std::optional<GaussianMicrosurfaceOptions> microsurface;
 };
 
 enum class SurfaceKind { Plane, Sphere };

@@ -259,16 +259,64 @@ Expected<DriverSource> read_driver(const JsonValue& value, const fs::path& scene
     return driver;
 }
 
+Expected<double> read_non_negative(const JsonValue& value)
+{
+    auto number = read_number(value);
+    if (number && !(*number >= 0)) return value.expected("a number >= 0");
+    return number;
+}
+
+Expected<int> read_cosine_count(const JsonValue& value)
+{
+    const nlohmann::json& j = value.json();
+    if (!j.is_number_integer() || j.get<long long>() < 1 || j.get<long long>() > kMaxMicrosurfaceCosines)
+        return value.expected("an integer from 1 to " + std::to_string(kMaxMicrosurfaceCosines));
+    return static_cast<int>(j.get<long long>());
+}
+
+Expected<std::uint64_t> read_seed(const JsonValue& value)
+{
+    const nlohmann::json& j = value.json();
+    if (!j.is_number_unsigned() && !(j.is_number_integer() && j.get<long long>() >= 0))
+        return value.expected("an integer >= 0");
+    return j.get<std::uint64_t>();
+}
+
+// A Gaussian microsurface (gaussian_microsurface.h); the tile defaults to 8
+// longest wavelengths.
+Expected<GaussianMicrosurfaceOptions> read_microsurface(const JsonValue& value)
+{
+    auto object = JsonObject::read(value, {"sigma_h", "min_wavelength", "max_wavelength", "cosines", "seed", "tile"});
+    if (!object) return object.error();
+    GaussianMicrosurfaceOptions o;
+    o.tile = -1;
+    Status status = object->read_required("sigma_h", o.sigma_h, read_non_negative);
+    if (status) status = object->read_required("min_wavelength", o.min_wavelength, read_positive);
+    if (status) status = object->read_required("max_wavelength", o.max_wavelength, read_positive);
+    if (status && o.max_wavelength < o.min_wavelength)
+        return value.member("max_wavelength").expected("a number >= min_wavelength " + std::to_string(o.min_wavelength));
+    if (status) status = object->read_optional("cosines", o.cosines, read_cosine_count);
+    if (status) status = object->read_optional("seed", o.seed, read_seed);
+    if (status) status = object->read_optional("tile", o.tile, read_positive);
+    if (!status) return status.error();
+    if (o.tile < 0) o.tile = kMicrosurfaceTileWavelengths * o.max_wavelength;
+    if (o.tile < o.max_wavelength)
+        return value.member("tile").expected("a period >= max_wavelength " + std::to_string(o.max_wavelength));
+    return o;
+}
+
 Expected<Material> read_material(const JsonValue& value, const fs::path& scene_folder)
 {
-    auto object = JsonObject::read(value, {"colormap", "driver"});
+    auto object = JsonObject::read(value, {"colormap", "driver", "microsurface"});
     if (!object) return object.error();
     Material material;
     Status status = object->read_required(
         "colormap", material.colormap, [&](const JsonValue& v) { return read_colormap(v, scene_folder); });
-    if (status)
+    if (status) status = object->require_one_of({"driver", "microsurface"});
+    if (status && object->has("driver"))
         status = object->read_required("driver", material.driver,
                                        [&](const JsonValue& v) { return read_driver(v, scene_folder); });
+    if (status && object->has("microsurface")) status = object->read_required("microsurface", material.microsurface, read_microsurface);
     if (!status) return status.error();
     return material;
 }
@@ -331,6 +379,27 @@ Status check_planar_mapping_on_plane(const JsonObject& surface_object, const Sur
                        vector_text(plane.normal) + (surface_object.has("mapping") ? "" : " (the default mapping)"));
 }
 
+// A microsurface displaces a plane along its normal, in the units of a
+// planar mapping that must be a scaled isometry of the plane (scene.h).
+Status check_microsurface_plane(const JsonObject& surface_object, const Surface& surface)
+{
+    const JsonValue material = surface_object.value().member("material");
+    if (surface.kind != SurfaceKind::Plane)
+        return material.member_error("microsurface", "a microsurface needs a plane (it displaces the plane along its "
+                                                     "normal), not a sphere");
+    const TextureMapping& m = surface.mapping;
+    const double ku = length(m.u_axis), kv = length(m.v_axis);
+    const double tolerance = 1e-6;
+    if (std::fabs(dot(m.u_axis, m.v_axis)) > tolerance * ku * kv || std::fabs(ku - kv) > tolerance * std::max(ku, kv) ||
+        std::fabs(dot(m.u_axis, surface.normal)) > tolerance * ku || std::fabs(dot(m.v_axis, surface.normal)) > tolerance * kv)
+        return surface_object.value().member_error(
+            "mapping", "a microsurface needs a planar mapping whose u_axis and v_axis are perpendicular, of equal "
+                       "length and in the plane (its heights and wavelengths are in texture units), got u_axis " +
+                           vector_text(m.u_axis) + " and v_axis " + vector_text(m.v_axis) + " on a plane of normal " +
+                           vector_text(surface.normal));
+    return ok();
+}
+
 Expected<SurfaceKind> read_surface_kind(const JsonValue& value)
 {
     return read_choice<SurfaceKind>(value, {{"plane", SurfaceKind::Plane}, {"sphere", SurfaceKind::Sphere}});
@@ -360,6 +429,7 @@ Expected<Surface> read_surface(const JsonValue& value, const fs::path& scene_fol
     if (status)
         status = object->read_required("material", surface.material,
                                        [&](const JsonValue& v) { return read_material(v, scene_folder); });
+    if (status && surface.material.microsurface) status = check_microsurface_plane(*object, surface);
     if (!status) return status.error();
     return surface;
 }

@@ -228,9 +228,25 @@ Status load_driver(const Scene& scene, std::size_t i, const MaterialOptions& opt
     return runtime_error(where(scene, i, "driver") + "unknown driver kind");
 }
 
+// A microsurface whose heights drive the map (sec. 5.1), and a clamp map's
+// domain checked against its heights' +- 3 sigma_h.
+Status load_microsurface(const Scene& scene, std::size_t i, SurfaceMaterial& m)
+{
+    const Surface& surface = scene.surfaces[i];
+    auto micro = GaussianMicrosurface::create(*surface.material.microsurface);
+    if (!micro) return located(micro.error(), where(scene, i, "microsurface"));
+    const double sigma = micro->sigma_h();
+    if (auto st = check_domain(scene, i, m, -3 * sigma, 3 * sigma, "the microsurface's heights, +- 3 sigma_h"); !st)
+        return st;
+    m.microsurface.emplace(std::move(*micro));
+    m.height_scale = 1.0 / length(surface.mapping.u_axis);
+    return ok();
+}
+
 Status refuse_noise_for_exact(const Scene& scene, std::size_t i)
 {
-    if (scene.surfaces[i].material.driver.kind != DriverKind::Noise) return ok();
+    if (scene.surfaces[i].material.microsurface || scene.surfaces[i].material.driver.kind != DriverKind::Noise)
+        return ok();
     return bad_input(where(scene, i, "driver") + "exact needs a texture driver with at most " +
                      std::to_string(kHistogramMaxValues) +
                      " distinct values; noise drivers have no exact filtering distribution");
@@ -246,9 +262,13 @@ Expected<std::vector<SurfaceMaterial>> prepare_materials(const Scene& scene, con
         if (auto st = load_colormap(scene, i, config, options, materials[i]); !st) return st.error();
         if (options.histograms)
             if (auto st = refuse_noise_for_exact(scene, i); !st) return st.error();
-        if (auto st = load_driver(scene, i, options, materials[i]); !st) return st.error();
-        if (options.histograms)
-            if (auto st = load_histograms(scene, i, options, materials[i]); !st) return st.error();
+        if (scene.surfaces[i].material.microsurface) {
+            if (auto st = load_microsurface(scene, i, materials[i]); !st) return st.error();
+        } else {
+            if (auto st = load_driver(scene, i, options, materials[i]); !st) return st.error();
+            if (options.histograms)
+                if (auto st = load_histograms(scene, i, options, materials[i]); !st) return st.error();
+        }
         TableChoiceOptions tables = options.tables;
         tables.threads = options.threads;
         if (auto st = choose_surface_table(scene, i, materials[i], tables); !st) return st.error();
@@ -259,8 +279,9 @@ Expected<std::vector<SurfaceMaterial>> prepare_materials(const Scene& scene, con
 bool exact_filterable(const std::vector<SurfaceMaterial>& materials)
 {
     for (const SurfaceMaterial& m : materials)
-        if (!m.texture || !m.texture->has_level0() ||
-            m.texture->distinct_values() > static_cast<std::size_t>(kHistogramMaxValues))
+        if (!m.microsurface &&  // a microsurface's <C_h, D_h> is exact without histograms (height_colour.h)
+            (!m.texture || !m.texture->has_level0() ||
+             m.texture->distinct_values() > static_cast<std::size_t>(kHistogramMaxValues)))
             return false;
     return true;
 }
@@ -271,7 +292,7 @@ Status prepare_histograms(const Scene& scene, std::vector<SurfaceMaterial>& mate
         return bad_input("histograms: " + std::to_string(materials.size()) + " materials for " +
                          std::to_string(scene.surfaces.size()) + " surfaces");
     for (std::size_t i = 0; i < materials.size(); ++i) {
-        if (materials[i].histograms) continue;
+        if (materials[i].histograms || materials[i].microsurface) continue;
         if (auto st = refuse_noise_for_exact(scene, i); !st) return st;
         if (auto st = load_histograms(scene, i, options, materials[i]); !st) return st;
     }

@@ -29,6 +29,7 @@
 #include "cmfilter/filtered_noise.h"
 #include "cmfilter/filtered_texture.h"
 #include "cmfilter/gaussian_color_table.h"
+#include "cmfilter/gaussian_microsurface.h"
 #include "cmfilter/histogram_pyramid.h"
 #include "cmfilter/plain_lookup.h"
 #include "cmfilter/scene.h"
@@ -50,7 +51,12 @@ struct SurfaceMaterial {
     PlainLookupSigma plain;
     TableFit fit;                       // how the table was chosen (tolerance_tables.h)
     std::optional<FilteredNoise> noise;     // a procedural driver, or
-    std::optional<FilteredTexture> texture; // a texture driver: exactly one is set
+    std::optional<FilteredTexture> texture; // a texture driver, or
+    // a microsurface whose heights drive the map (sec. 5.1): exactly one is
+    // set. Heights and wavelengths in texture units; height_scale scene units
+    // per texture unit (1 / the mapping's axis length).
+    std::optional<GaussianMicrosurface> microsurface;
+    double height_scale = 1;
     std::string map_path, table_path;   // provenance (empty table_path: baked here)
     std::string driver_path;            // texture: the level-0 driver image read (or recorded, when gone)
     // A moments driver whose recorded driver is gone (no level 0): the error

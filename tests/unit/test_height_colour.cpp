@@ -64,3 +64,26 @@ TEST_CASE("exact height colour of a ramp map matches the tail integral of D_h")
     grey.texels = {Rgb{0.3, 0.3, 0.3}};
     CHECK(exact_height_colour(grey, 0.2, 50).r == doctest::Approx(0.3).epsilon(1e-12));
 }
+
+TEST_CASE("exact height colour about a resolved mean height reads the map at the offset heights")
+{
+    ColorMap map;
+    map.texels = {Rgb{0, 0, 0}, Rgb{1, 1, 1}};
+    map.vmin = -0.1;
+    map.vmax = 0.1;
+    for (double offset : {-0.03, 0.045})
+        for (double L : {0.0, 2.0, 300.0}) {
+            CAPTURE(offset);
+            CAPTURE(L);
+            const double sigma_h = 0.03, p0 = -0.05 - offset, p1 = 0.05 - offset;
+            const int n = 20000;
+            double sum = 0;
+            for (int k = 0; k <= n; ++k) {
+                const double t = p0 + (p1 - p0) * k / n;
+                const double tail = -std::expm1((L + 1) * std::log(0.5 * std::erfc(-t / (sigma_h * std::sqrt(2.0)))));
+                sum += (k == 0 || k == n) ? 0.5 * tail : tail;
+            }
+            CHECK(exact_height_colour(map, sigma_h, L, offset).r == doctest::Approx(sum / n).epsilon(1e-6).scale(1e-6));
+        }
+    CHECK(exact_height_colour(map, 0, 3, 0.025).r == doctest::Approx(0.75));
+}

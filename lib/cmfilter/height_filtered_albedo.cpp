@@ -1,0 +1,42 @@
+#include "cmfilter/height_filtered_albedo.h"
+
+#include "cmfilter/height_colour.h"
+#include "cmfilter/height_filtering.h"
+#include "cmfilter/smith_lambda.h"
+
+namespace cmfilter {
+
+HeightAlbedo height_filtered_albedo(const SurfaceMaterial& material, const MicrosurfaceFootprint& footprint,
+                                    const HeightDirections& d, HeightRepresentation representation,
+                                    const HeightMomentTable& table, AlbedoCounts& counts)
+{
+    HeightAlbedo out;
+    if (representation == HeightRepresentation::Naive) {
+        out.albedo = material.map.evaluate(footprint.mean_height);
+        out.mean = footprint.mean_height;
+        return out;
+    }
+    // Smith's Lambda (eq. 3) for the unresolved slopes along each azimuth.
+    const double lambda_o = smith_lambda_gaussian(d.theta_o, footprint.sigma_s(d.phi_o));
+    const double lambda_i = smith_lambda_gaussian(d.theta_i, footprint.sigma_s(d.phi_i));
+    out.lambda_sum = lambda_o + lambda_i;
+    out.visibility = mean_visibility(lambda_o, lambda_i);  // eq. 13
+    if (representation == HeightRepresentation::Exact) {
+        // eq. 14: V <C_h, D_h>, D_h exactly (eq. 16).
+        const HeightMoments moments = exact_height_moments(out.lambda_sum, footprint.sigma_h);
+        out.mean = footprint.mean_height + moments.mean;
+        out.sigma = moments.sigma;
+        out.albedo = out.visibility *
+                     exact_height_colour(material.map, footprint.sigma_h, out.lambda_sum, footprint.mean_height);
+        return out;
+    }
+    const HeightMoments moments = representation == HeightRepresentation::PaperFit
+                                      ? paper_height_fit(out.lambda_sum, footprint.sigma_h)  // eqs. 17-18
+                                      : table.lookup(out.lambda_sum, footprint.sigma_h);
+    out.mean = footprint.mean_height + moments.mean;
+    out.sigma = moments.sigma;
+    out.albedo = out.visibility * gaussian_albedo(material, out.mean, out.sigma, counts);  // eq. 14 with eq. 10
+    return out;
+}
+
+}  // namespace cmfilter

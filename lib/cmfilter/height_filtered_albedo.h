@@ -1,0 +1,48 @@
+// The albedo of a height-coloured microsurface over one footprint (Heitz et
+// al. 2013, sec. 5.1), for each representation of the height filtering
+// distribution D_h (eqs. 15-16) `render` offers:
+//   naive           C_h(mean height): the footprint's resolved mean, with no
+//                   masking or shadowing;
+//   paper-fit       V T(mean + mu_d, sigma_d), the Gaussian table (eq. 10) at
+//                   the paper's fit of D_h's moments (eqs. 17-18);
+//   exact-moments   the same with D_h's exact mean and central sigma
+//                   (height_moment_table.h);
+//   exact           V <C_h, D_h> without a Gaussian (height_colour.h);
+// with V the mean visibility of eq. 13 (eq. 14 multiplies it in). D_h is
+// taken over the heights the footprint does not resolve (sigma_h and the
+// slopes' sigma_s along the view's and the light's azimuths, from
+// microsurface_footprint.h), about the resolved mean height; Lambda_o and
+// Lambda_i are Smith's (eq. 3) for those slopes.
+#pragma once
+
+#include "cmfilter/color.h"
+#include "cmfilter/gaussian_albedo.h"
+#include "cmfilter/height_moment_table.h"
+#include "cmfilter/microsurface_footprint.h"
+#include "cmfilter/scene_materials.h"
+
+namespace cmfilter {
+
+enum class HeightRepresentation { Naive, PaperFit, ExactMoments, Exact };
+
+// The view (towards the viewer) and the light (towards it) in the
+// microsurface's frame: angles from its mean normal, in [0, pi/2] (beyond:
+// below the surface, read as pi/2), and azimuths from its x axis.
+struct HeightDirections {
+    double theta_o = 0, phi_o = 0, theta_i = 0, phi_i = 0;
+};
+
+struct HeightAlbedo {
+    Rgb albedo;
+    double mean = 0, sigma = 0;  // of the heights seen lit (the naive method: the resolved mean, sigma 0)
+    double lambda_sum = 0;       // Lambda_o + Lambda_i (eq. 3)
+    double visibility = 1;       // eq. 13
+};
+
+// `table` serves ExactMoments; `counts` counts the table lookups as
+// gaussian_albedo does.
+HeightAlbedo height_filtered_albedo(const SurfaceMaterial& material, const MicrosurfaceFootprint& footprint,
+                                    const HeightDirections& directions, HeightRepresentation representation,
+                                    const HeightMomentTable& table, AlbedoCounts& counts);
+
+}  // namespace cmfilter
