@@ -161,7 +161,7 @@ Expected<Heightfield> Heightfield::create(const GaussianMicrosurface& surface, c
     // Texel tile / N <= min_wavelength / texels_per_min_wavelength.
     const double needed = surface.tile() * options.texels_per_min_wavelength * top_frequency;
     std::int64_t n = 1;
-    while (static_cast<double>(n) < needed * (1 - 1e-12) && n <= options.max_resolution) n *= 2;
+    while (static_cast<double>(n) < needed * (1 - 1e-12) && n <= kLargestResolution) n *= 2;
     if (n > options.max_resolution)
         return bad_input("heightfield resolution " + std::to_string(n) + " (texels_per_min_wavelength " +
                          std::to_string(options.texels_per_min_wavelength) + " over min wavelength " +
@@ -252,16 +252,17 @@ std::optional<Heightfield::Crossing> Heightfield::walk(const Ray& r, double t_en
         const double tx = r.du != 0 ? (static_cast<double>(fx) - r.u) * inv_du : kInfinity;
         const double ty = r.dv != 0 ? (static_cast<double>(fy) - r.v) * inv_dv : kInfinity;
         const double te = std::max(t, std::min(std::min(tx, ty), t_end));
-        // Only a ray above the surface skips what lies below it.
+        // A ray above the surface skips a block with no node above its
+        // lowest point: none of the block is strictly above the ray.
         const double lowest = side > 0 ? r.z + r.dz * (r.dz < 0 ? te : t) : -kInfinity;
         if (k > 0) {
-            if (lowest <= mipmap_.block_max(k, cx, cy)) {
+            if (lowest < mipmap_.block_max(k, cx, cy)) {
                 --k;  // the same texel in a smaller block
                 continue;
             }
         } else {
             const Patch p = load_patch(nodes_, n_, ix, iy);
-            if (lowest <= p.top) {
+            if (lowest < p.top) {
                 // f(tau) = z - h along the ray from t: c0 + c1 tau + c2 tau^2.
                 const double fu = r.u + r.du * t - ix, fv = r.v + r.dv * t - iy;
                 const double c0 = origin_on_surface ? 0 : r.z + r.dz * t - p.at(fu, fv);
@@ -293,21 +294,24 @@ std::optional<Heightfield::Crossing> Heightfield::walk(const Ray& r, double t_en
 std::optional<HeightfieldHit> Heightfield::trace(const Vec3& origin, const Vec3& direction, double t_max) const
 {
     if (!finite(origin) || !finite(direction) || direction == Vec3{} || !(t_max > 0)) return std::nullopt;
+    // The slab, widened by the on-surface tolerance: a ray leaving it
+    // downwards from above is strictly below every node, so the crossing
+    // lies inside it, even where the slab is flat (sigma_h = 0).
     const double tol = on_surface_tolerance(origin);
-    const double dz = direction.z;
+    const double lo = min_height_ - tol, hi = max_height_ + tol, dz = direction.z;
     // [t0, t1]: inside the slab; side: where the ray enters it from.
     double t0 = 0, t1 = kInfinity;
     int side = 0;
-    const bool at_origin = origin.z <= max_height_ + tol && origin.z >= min_height_ - tol;
+    const bool at_origin = origin.z >= lo && origin.z <= hi;
     if (at_origin) {
-        if (dz != 0) t1 = std::max(0.0, ((dz < 0 ? min_height_ : max_height_) - origin.z) / dz);
-    } else if (origin.z > max_height_ && dz < 0) {
-        t0 = (max_height_ - origin.z) / dz;
-        t1 = (min_height_ - origin.z) / dz;
+        if (dz != 0) t1 = std::max(0.0, ((dz < 0 ? lo : hi) - origin.z) / dz);
+    } else if (origin.z > hi && dz < 0) {
+        t0 = (hi - origin.z) / dz;
+        t1 = (lo - origin.z) / dz;
         side = 1;
-    } else if (origin.z < min_height_ && dz > 0) {
-        t0 = (min_height_ - origin.z) / dz;
-        t1 = (max_height_ - origin.z) / dz;
+    } else if (origin.z < lo && dz > 0) {
+        t0 = (lo - origin.z) / dz;
+        t1 = (hi - origin.z) / dz;
         side = -1;
     } else {
         return std::nullopt;  // outside the slab, going away from it
