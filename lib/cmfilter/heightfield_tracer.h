@@ -24,8 +24,8 @@
 // of it: a point returned by trace) starts on the side the local patch's
 // gradient puts its direction, never by an epsilon offset. A ray that stays
 // inside the slab for more than kMaxTilesTravelled tiles horizontally without
-// crossing is taken as not crossing (only rays within about 0.005 degrees of
-// horizontal can get that far).
+// crossing is taken as not crossing (with a slab a tenth of a tile thick, only
+// rays within 0.006 degrees of horizontal get that far).
 //
 // Immutable; const queries are thread-safe; no global state.
 #pragma once
@@ -87,7 +87,7 @@ public:
     // strictly below the surface. A point on the surface whose patch faces
     // away from the light (or any direction below the horizontal) is
     // occluded at once. A point clearly above the surface may be given too;
-    // one below it is occluded.
+    // one below it is occluded, and so is any non-finite or zero input.
     bool occluded(const Vec3& point, const Vec3& to_light) const;
 
 private:
