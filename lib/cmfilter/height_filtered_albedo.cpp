@@ -2,9 +2,20 @@
 
 #include "cmfilter/height_colour.h"
 #include "cmfilter/height_filtering.h"
+#include "cmfilter/normal_distribution.h"
 #include "cmfilter/smith_lambda.h"
 
+#include <cmath>
+
 namespace cmfilter {
+
+double resolved_visibility(double height, double sigma_r, double lambda)
+{
+    if (!(lambda > 0) || !(sigma_r > 0)) return 1;
+    const double log_phi = log_normal_cdf(height / sigma_r);
+    if (std::isinf(lambda)) return log_phi < 0 ? 0.0 : 1.0;
+    return std::exp(lambda * log_phi);  // eq. 2
+}
 
 HeightAlbedo height_filtered_albedo(const SurfaceMaterial& material, const MicrosurfaceFootprint& footprint,
                                     const HeightDirections& d, HeightRepresentation representation,
@@ -21,13 +32,16 @@ HeightAlbedo height_filtered_albedo(const SurfaceMaterial& material, const Micro
     const double lambda_i = smith_lambda_gaussian(d.theta_i, footprint.sigma_s(d.phi_i));
     out.lambda_sum = lambda_o + lambda_i;
     out.visibility = mean_visibility(lambda_o, lambda_i);  // eq. 13
+    out.resolved_visibility =
+        resolved_visibility(footprint.mean_height, footprint.resolved_sigma_h,
+                            smith_lambda_gaussian(d.theta_i, footprint.resolved_sigma_s(d.phi_i)));
+    const double v = out.visibility * out.resolved_visibility;
     if (representation == HeightRepresentation::Exact) {
         // eq. 14: V <C_h, D_h>, D_h exactly (eq. 16).
         const HeightMoments moments = exact_height_moments(out.lambda_sum, footprint.sigma_h);
         out.mean = footprint.mean_height + moments.mean;
         out.sigma = moments.sigma;
-        out.albedo = out.visibility *
-                     exact_height_colour(material.map, footprint.sigma_h, out.lambda_sum, footprint.mean_height);
+        out.albedo = v * exact_height_colour(material.map, footprint.sigma_h, out.lambda_sum, footprint.mean_height);
         return out;
     }
     const HeightMoments moments = representation == HeightRepresentation::PaperFit
@@ -35,7 +49,7 @@ HeightAlbedo height_filtered_albedo(const SurfaceMaterial& material, const Micro
                                       : table.lookup(out.lambda_sum, footprint.sigma_h);
     out.mean = footprint.mean_height + moments.mean;
     out.sigma = moments.sigma;
-    out.albedo = out.visibility * gaussian_albedo(material, out.mean, out.sigma, counts);  // eq. 14 with eq. 10
+    out.albedo = v * gaussian_albedo(material, out.mean, out.sigma, counts);  // eq. 14 with eq. 10
     return out;
 }
 

@@ -13,6 +13,18 @@
 // slopes' sigma_s along the view's and the light's azimuths, from
 // microsurface_footprint.h), about the resolved mean height; Lambda_o and
 // Lambda_i are Smith's (eq. 3) for those slopes.
+//
+// The heights the footprint resolves are geometry: the light can be hidden
+// from the pixel's point by the resolved bumps around it. Where a renderer
+// does not displace them (render's one-ray methods colour a flat plane),
+// every representation but naive multiplies in their expected shadowing,
+// Smith's visibility (eq. 2) of a point at the resolved height h_r on the
+// resolved surface (sigma_r, and its slopes along the light's azimuth):
+//     V_r = Phi(h_r / sigma_r)^Lambda_r(theta_i).
+// It is 1 far away (nothing resolved: Lambda_r -> 0) and the expected
+// shadowing of the point itself close up (everything resolved), so the
+// albedo is continuous from one to the other; in between it takes the
+// resolved and the unresolved shadowing as independent.
 #pragma once
 
 #include "cmfilter/color.h"
@@ -37,7 +49,12 @@ struct HeightAlbedo {
     double mean = 0, sigma = 0;  // of the heights seen lit (the naive method: the resolved mean, sigma 0)
     double lambda_sum = 0;       // Lambda_o + Lambda_i (eq. 3)
     double visibility = 1;       // eq. 13
+    double resolved_visibility = 1;  // V_r
 };
+
+// V_r: Phi(height / sigma_r)^lambda, 1 where sigma_r or lambda is 0, and
+// for an infinite lambda 0 below the highest point.
+double resolved_visibility(double height, double sigma_r, double lambda);
 
 // `table` serves ExactMoments; `counts` counts the table lookups as
 // gaussian_albedo does.

@@ -17,7 +17,11 @@
 // nothing (s -> 0: the mean is 0 and sigma_u = sigma_h), so the filtered
 // colour is continuous from close up to far away. These are the sigma_h and
 // sigma_s the height filtering distribution D_h (eqs. 15-18) and Smith's
-// Lambda (eq. 3) take, about the resolved mean height.
+// Lambda (eq. 3) take, about the resolved mean height. The resolved part is
+// itself a Gaussian surface, the box-filtered heights, with variance
+// sigma_r^2 = sum_k a_k^2 s_k^2 / 2 and slope covariance
+// R = sum_k a_k^2 s_k^2 (2 pi)^2 f_k f_k^T / 2 (sigma_r^2 + sigma_u^2 =
+// sigma_h^2): what a light sees of its geometry (height_filtered_albedo.h).
 #pragma once
 
 #include "cmfilter/gaussian_microsurface.h"
@@ -28,9 +32,13 @@ struct MicrosurfaceFootprint {
     double mean_height = 0;                      // resolved: the box-filtered height at the centre
     double sigma_h = 0;                          // unresolved height deviation
     double slope_xx = 0, slope_xy = 0, slope_yy = 0;  // unresolved slope covariance S
+    double resolved_sigma_h = 0;                 // sigma_r
+    double resolved_xx = 0, resolved_xy = 0, resolved_yy = 0;  // resolved slope covariance R
 
     // The unresolved slope deviation along the unit direction (cos a, sin a).
     double sigma_s(double azimuth) const;
+    // The resolved one.
+    double resolved_sigma_s(double azimuth) const;
 };
 
 // The footprint centred at (u, v) with edges (e1u, e1v) and (e2u, e2v), in

@@ -2,6 +2,7 @@
 
 #include "cmfilter/anisotropic_probes.h"
 #include "cmfilter/camera.h"
+#include "cmfilter/displaced_plane_sample.h"
 #include "cmfilter/gaussian_albedo.h"
 #include "cmfilter/height_filtered_albedo.h"
 #include "cmfilter/microsurface_footprint.h"
@@ -122,6 +123,15 @@ double driver_value(const SurfaceMaterial& m, double u, double v)
 {
     return m.texture ? m.texture->value(u, v) : m.noise->noise()(u, v);
 }
+
+// A pixel's rays that meet one microsurface: sum of C_h(h) <m, l>+ over the
+// lit ones, of <m, l>+ over all, and how many.
+struct MicrosurfaceSamples {
+    Rgb lit_colour;
+    double light_cosine = 0;
+    int count = 0;
+    Vec3 normal;
+};
 
 // How a one-ray method represents a microsurface's height filtering
 // distribution (height_filtered_albedo.h).
@@ -258,6 +268,19 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
         image.covered.assign(pixels, 0.0f);
         image.covered_distance.assign(pixels, 0.0f);
     }
+    // The ray-traced methods trace each microsurface's tabulated heightfield
+    // (heightfield_tracer.h) and shade it fully as well.
+    std::vector<std::optional<Heightfield>> heightfields(materials.size());
+    if (supersampled)
+        for (std::size_t i = 0; i < materials.size(); ++i)
+            if (materials[i].microsurface) {
+                HeightfieldOptions ho;
+                ho.threads = options.threads;
+                auto field = Heightfield::create(*materials[i].microsurface, ho);
+                if (!field) return Error{field.error().kind, "surface " + std::to_string(i) + ": " + field.error().message};
+                heightfields[i].emplace(std::move(*field));
+                image.shaded.assign(3 * pixels, 0.0f);
+            }
 
     // Geometric coverage of pixels on edges, for the one-ray methods.
     std::optional<PixelCoverage> coverage;
@@ -270,6 +293,7 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
     parallel_for(image.height, options.threads, [&](int y) {
         std::vector<double> xs, ys;
         std::vector<float> weights;
+        std::vector<MicrosurfaceSamples> micro_samples(materials.size());
         PixelCover cover;
         AlbedoCounts counts;
         // The colour of a surface hit, filtered over its footprint, and the
@@ -366,23 +390,65 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
             }
             if (supersampled) {
                 sample_positions(image.samples, options.seed, p, xs, ys);
-                Rgb sum;
+                Rgb sum, shaded_sum;
                 int hits = 0;
                 double distance = 0;
+                for (MicrosurfaceSamples& m : micro_samples) m = {};
                 for (int s = 0; s < image.samples; ++s) {
                     const CameraRay ray = camera->ray(x + xs[static_cast<std::size_t>(s)], y + ys[static_cast<std::size_t>(s)]);
                     const auto sample_hit = intersect_scene(scene, ray);
                     if (!sample_hit) {
                         sum += scene.background;
+                        shaded_sum += scene.background;
                         continue;
                     }
                     const SurfaceHit& h = sample_hit->hit;
-                    const SurfaceMaterial& m = materials[static_cast<std::size_t>(sample_hit->surface)];
-                    sum += shade(m.map.evaluate(driver_value(m, h.u, h.v)), h.normal, scene.light);
+                    const auto surface = static_cast<std::size_t>(sample_hit->surface);
+                    const SurfaceMaterial& m = materials[surface];
+                    if (m.microsurface) {
+                        // The displaced plane, ray traced (displaced_plane_sample.h).
+                        const auto traced = trace_displaced_plane(scene.surfaces[surface], *heightfields[surface],
+                                                                  ray.origin, ray.direction, scene.light.direction);
+                        if (!traced) {
+                            sum += scene.background;
+                            shaded_sum += scene.background;
+                            continue;
+                        }
+                        const Rgb c = m.map.evaluate(traced->height);
+                        MicrosurfaceSamples& acc = micro_samples[surface];
+                        const double lit = traced->lit ? traced->light_cosine : 0.0;
+                        acc.lit_colour += lit * c;
+                        acc.light_cosine += traced->light_cosine;
+                        acc.normal = h.normal;
+                        ++acc.count;
+                        shaded_sum += Rgb{c.r * (scene.light.radiance.r * lit + scene.light.ambient.r),
+                                          c.g * (scene.light.radiance.g * lit + scene.light.ambient.g),
+                                          c.b * (scene.light.radiance.b * lit + scene.light.ambient.b)};
+                        ++hits;
+                        distance += traced->t;
+                        continue;
+                    }
+                    const Rgb c = shade(m.map.evaluate(driver_value(m, h.u, h.v)), h.normal, scene.light);
+                    sum += c;
+                    shaded_sum += c;
                     ++hits;
                     distance += h.t;
                 }
+                // Each microsurface's share of the pixel: the albedo of eq. 14
+                // estimated from its rays (the lit colour over the light
+                // cosine, microsurface.md), shaded with the plane's normal.
+                for (const MicrosurfaceSamples& acc : micro_samples)
+                    if (acc.count > 0)
+                        sum += static_cast<double>(acc.count) *
+                               shade(acc.light_cosine > 0 ? (1.0 / acc.light_cosine) * acc.lit_colour : Rgb{},
+                                     acc.normal, scene.light);
                 colour = (1.0 / image.samples) * sum;
+                if (!image.shaded.empty()) {
+                    const Rgb shaded = (1.0 / image.samples) * shaded_sum;
+                    image.shaded[3 * p] = static_cast<float>(shaded.r);
+                    image.shaded[3 * p + 1] = static_cast<float>(shaded.g);
+                    image.shaded[3 * p + 2] = static_cast<float>(shaded.b);
+                }
                 image.covered[p] = static_cast<float>(hits) / static_cast<float>(image.samples);
                 image.covered_distance[p] = hits > 0 ? static_cast<float>(distance / hits) : 0.0f;
             }

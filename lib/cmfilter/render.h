@@ -84,6 +84,11 @@ struct RenderedImage {
     // pixel's rays that hit a surface, and their mean distance (0 where none
     // does): the pixels a surface covers in part, whose centre ray may miss.
     std::vector<float> covered, covered_distance;
+    // supersample and reference on a scene with a microsurface (else empty):
+    // the fully shaded image, each ray's hit lit by the light through its own
+    // micro-normal and shadow ray, C_h(h) (radiance <m, l>+ V + ambient),
+    // where rgb holds the eq. 14 albedo shaded by the plane's normal.
+    std::vector<float> shaded;
     RenderMethod method = RenderMethod::Gaussian;
     int samples = 1;           // rays per pixel
     // gaussian: footprints (pixels or probes) coloured, and how many took

@@ -96,4 +96,30 @@ TEST_CASE("a point footprint resolves everything and a wide one nothing")
     CHECK(std::fabs(wide.mean_height) < 1e-4 * s.sigma_h());
     CHECK(wide.sigma_h == doctest::Approx(s.sigma_h()).epsilon(1e-4));
     for (double a : {0.0, 1.0, 2.5}) CHECK(wide.sigma_s(a) == doctest::Approx(s.sigma_s(a)).epsilon(1e-4));
+    CHECK(point.resolved_sigma_h == doctest::Approx(s.sigma_h()).epsilon(1e-12));
+    CHECK(wide.resolved_sigma_h < 1e-3 * s.sigma_h());
+}
+
+TEST_CASE("the resolved part's spread is the spread of the box-filtered heights over the surface")
+{
+    const GaussianMicrosurface s = test_surface();
+    const double w = 0.12, e1u = w, e1v = 0.1 * w, e2u = -0.3 * w, e2v = 0.8 * w;
+    // The filtered heights and slopes (finite differences of the filtered
+    // height) over many centres.
+    double h2 = 0, d2 = 0;
+    const int centres = 4000;
+    const double step = 1e-5, azimuth = 2.0;
+    for (int k = 0; k < centres; ++k) {
+        const double u = 23.1 * std::sin(1.3 * k + 0.2), v = 19.7 * std::cos(0.7 * k);
+        const double h = filter_microsurface(s, u, v, e1u, e1v, e2u, e2v).mean_height;
+        const double ahead = filter_microsurface(s, u + step * std::cos(azimuth), v + step * std::sin(azimuth), e1u,
+                                                 e1v, e2u, e2v).mean_height;
+        h2 += h * h / centres;
+        d2 += (ahead - h) * (ahead - h) / (step * step) / centres;
+    }
+    const MicrosurfaceFootprint f = filter_microsurface(s, 0, 0, e1u, e1v, e2u, e2v);
+    CHECK(f.resolved_sigma_h == doctest::Approx(std::sqrt(h2)).epsilon(0.05));
+    CHECK(f.resolved_sigma_s(azimuth) == doctest::Approx(std::sqrt(d2)).epsilon(0.05));
+    CHECK(f.resolved_sigma_h * f.resolved_sigma_h + f.sigma_h * f.sigma_h ==
+          doctest::Approx(s.sigma_h() * s.sigma_h()).epsilon(1e-9));
 }
