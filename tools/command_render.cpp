@@ -114,9 +114,12 @@ Status run(const RenderArgs& args)
         return bad_input(msg.str());
     }
     const std::string aov_paths[3] = {args.aov + ".mean.exr", args.aov + ".sigma.exr", args.aov + ".lod.exr"};
-    if (!args.aov.empty())
+    const std::string shaded_path = args.aov + ".shaded.exr";
+    if (!args.aov.empty()) {
         for (const auto& path : aov_paths)
             if (auto st = check_rgb_image_output(path, true); !st) return st;
+        if (auto st = check_rgb_image_output(shaded_path, true); !st) return st;
+    }
     auto scene = load_scene(args.scene);
     if (!scene) return scene.error();
     auto config = load_color_config(args.ocio_config);
@@ -162,6 +165,14 @@ Status run(const RenderArgs& args)
         if (auto st = write_aov(aov_paths[0], *image, image->mean, "mean", *config); !st) return st;
         if (auto st = write_aov(aov_paths[1], *image, image->sigma, "sigma", *config); !st) return st;
         if (auto st = write_aov(aov_paths[2], *image, image->lod, "lod", *config); !st) return st;
+        if (!image->shaded.empty()) {
+            // The ray-traced microsurfaces, fully shaded (render.h).
+            a.text.push_back({"cmfilter:aov", "shaded"});
+            if (auto st = write_rgb_image(shaded_path, image->width, image->height, 3, image->shaded,
+                                          config->scene_linear_name(), a, *config);
+                !st)
+                return st;
+        }
     }
 
     std::size_t hits = 0;
@@ -183,7 +194,10 @@ Status run(const RenderArgs& args)
         for (const SurfaceMaterial& m : *materials) j["tables"].push_back(table_json(m));
         if (image->method == RenderMethod::Gaussian)
             j["footprints"] = {{"filtered", image->footprints}, {"plain", image->plain_footprints}};
-        if (!args.aov.empty()) j["aov"] = {aov_paths[0], aov_paths[1], aov_paths[2]};
+        if (!args.aov.empty()) {
+            j["aov"] = {aov_paths[0], aov_paths[1], aov_paths[2]};
+            if (!image->shaded.empty()) j["aov"].push_back(shaded_path);
+        }
         std::cout << j.dump(2) << "\n";
     } else if (!args.quiet) {
         std::cout << "wrote " << args.output << ": " << image->width << " x " << image->height << ", "
@@ -207,7 +221,7 @@ Command setup_render(CLI::App& parent)
     CLI::App* app = parent.add_subcommand("render", "Render a scene with colour-mapped surfaces, filtered per pixel");
     app->add_option("scene", args->scene, "Scene file (JSON, docs/scene-format.md)")->required();
     app->add_option("-o,--output", args->output, "Image to write (.exr scene-linear, .png/.jpg sRGB)")->required();
-    app->add_option("--method", args->method, "naive, gaussian, exact (texture drivers with at most 256 values), supersample or reference")->capture_default_str();
+    app->add_option("--method", args->method, "naive, gaussian, gaussian-exact (microsurfaces: D_h's exact moments), exact (microsurfaces, or texture drivers with at most 256 values), supersample or reference")->capture_default_str();
     app->add_option("--spp", args->samples, "Rays per pixel for supersample (reference: at least 1024)")
         ->capture_default_str();
     app->add_option("--seed", args->seed, "Seed of the sub-pixel samples")->capture_default_str();
@@ -227,7 +241,9 @@ Command setup_render(CLI::App& parent)
                     "gaussian: take C0(mean) directly where sigma is so small that the exact filtered colour is "
                     "within this CIEDE2000 of it (default: a tenth of the tolerance for a fitted table, else off; "
                     "0: off)");
-    app->add_option("--aov", args->aov, "Also write PREFIX.mean.exr, PREFIX.sigma.exr and PREFIX.lod.exr");
+    app->add_option("--aov", args->aov,
+                    "Also write PREFIX.mean.exr, PREFIX.sigma.exr and PREFIX.lod.exr (and, for supersample and "
+                    "reference on a microsurface, PREFIX.shaded.exr: the fully shaded image)");
     app->add_option("--ocio-config", args->ocio_config,
                     "OpenColorIO config (default: $OCIO if set, else the built-in config)");
     app->add_option("--threads", args->threads, "Threads (0: all cores)")->capture_default_str();

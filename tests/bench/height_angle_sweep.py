@@ -1,9 +1,11 @@
 #!/usr/bin/env python3
 """Height-correlated colour against view and light angle (docs/microsurface.md).
 
-For each angle from 0 to 89 degrees and three set-ups (the view swept with
-the light overhead, the light swept with the view overhead, and both at the
-same angle with azimuths 90 degrees apart), this renders a far patch of the
+For each angle from 0 to 89 degrees and four set-ups (the view swept with
+the light overhead, the light swept with the view overhead, both at the
+same angle with azimuths 90 degrees apart, and the light from the viewer:
+where Smith's model, which takes masking and shadowing as independent, is
+furthest from the truth), this renders a far patch of the
 bundled microsurface (examples/scenes/plane-microsurface-sand-snow.json's
 material) seen through a narrow camera, so that every pixel looks at the
 angle and its footprint spans several of the longest wavelengths, by every
@@ -28,6 +30,7 @@ SETUPS = {
     "view": "view swept, light overhead",
     "light": "light swept, view overhead",
     "both": "view and light at the angle, azimuths 90 degrees apart",
+    "retro": "light from the viewer (same angle and azimuth)",
 }
 FOV_DEGREES = 0.5       # every pixel within 0.25 degrees of the angle
 FOOTPRINT = 1.0         # texture units across a pixel (2.5 longest wavelengths)
@@ -42,8 +45,8 @@ def scene_for(setup, angle, size, root):
     bundled = json.load(open(os.path.join(root, "examples/scenes/plane-microsurface-sand-snow.json")))
     material = bundled["surfaces"][0]["material"]
     material["colormap"]["image"] = os.path.join(root, "luts", "sand-snow.png")
-    view = direction(angle if setup in ("view", "both") else 0, 0)
-    light = direction(angle if setup in ("light", "both") else 0, 90)
+    view = direction(angle if setup in ("view", "both", "retro") else 0, 0)
+    light = direction(angle if setup in ("light", "both", "retro") else 0, 0 if setup == "retro" else 90)
     distance = FOOTPRINT * size / math.radians(FOV_DEGREES)
     return {
         "camera": {"position": [distance * c for c in view], "look_at": [0, 0, 0], "up": [0, 0, 1],
@@ -74,7 +77,7 @@ def main():
     parser.add_argument("build")
     parser.add_argument("work")
     parser.add_argument("--threads", type=int, default=0)
-    parser.add_argument("--spp", type=int, default=1024)
+    parser.add_argument("--spp", type=int, default=4096)
     parser.add_argument("--size", type=int, default=16)
     args = parser.parse_args()
     root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -123,11 +126,11 @@ def main():
               "reference_repeat": 'pt 1 dt 3 lc rgb "gray40"'}
     titles = {"reference_repeat": "reference vs itself (other seed)"}
     with open(f"{work}/height-angles.gp", "w") as g:
-        g.write(f'set terminal pngcairo size 1500,520 font ",11"\nset output "{work}/height-angles.png"\n'
-                'set multiplot layout 1,3 title "Height-correlated colour (sand-snow microsurface): mean CIEDE2000 '
+        g.write(f'set terminal pngcairo size 1800,560 font ",11"\nset output "{work}/height-angles.png"\n'
+                'set multiplot layout 1,4 title "Height-correlated colour (sand-snow microsurface): mean CIEDE2000 '
                 'against the ray-traced heightfield"\n'
                 'set grid\nset xrange [0:90]\nset xtics 10\nset logscale y\nset yrange [0.05:50]\n'
-                'set key top left\nset ylabel "mean CIEDE2000"\n'
+                'set key at screen 0.5, screen 0.04 center horizontal maxrows 1\nset bmargin 7\nset ylabel "mean CIEDE2000"\n'
                 'set arrow 1 from 80, graph 0 to 80, graph 1 nohead dt 2 lc rgb "black"\n'
                 'set arrow 2 from graph 0, first 2 to graph 1, first 2 nohead dt 2 lc rgb "black"\n')
         index = 0
@@ -139,6 +142,7 @@ def main():
                              f'{styles[series]} title "{titles.get(series, series)}"')
                 index += 1
             g.write("plot " + ", \\\n     ".join(plots) + "\n")
+            g.write("unset key\n")  # one key, below the first panel's row
         g.write("unset multiplot\n")
     subprocess.run(["gnuplot", f"{work}/height-angles.gp"], check=True)
     print(f"wrote {out} and {work}/height-angles.png")
