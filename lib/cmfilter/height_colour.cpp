@@ -22,13 +22,20 @@ Rgb exact_height_colour(const ColorMap& map, double sigma_h, double lambda_sum, 
     const double L = std::isnan(lambda_sum) ? 0.0 : std::min(std::max(0.0, lambda_sum), 1e100);
     const double k1 = L + 1;
     // The heights that carry weight: v = Phi(h / sigma_h)^(L+1) in
-    // [1e-15, 1 - 1e-15] (the upper end through complements: for large L
-    // its u = v^(1/(L+1)) rounds to 1).
-    const double x_lo = normal_quantile(std::exp(std::log(1e-15) / k1));
-    const double x_hi = -normal_quantile(-std::expm1(std::log1p(-1e-15) / k1));
+    // [1e-15, 1 - 1e-15], at u = v^(1/(L+1)). Where u is close to 1 (the
+    // upper end always, the lower one for large L: beyond L ~ 3e17 its u
+    // rounds to 1, whose quantile is +infinity) the quantile is taken of
+    // 1 - u, through complements.
+    const auto quantile_of_root = [&](double log_v) {
+        const double log_u = log_v / k1;
+        return log_u < -0.5 ? normal_quantile(std::exp(log_u)) : -normal_quantile(-std::expm1(log_u));
+    };
+    const double x_lo = quantile_of_root(std::log(1e-15));
+    const double x_hi = quantile_of_root(std::log1p(-1e-15));
     // Breakpoints: the map's nodes between them (at most 100000), then
-    // panels no wider than sigma_h / 4, where D_h's density is smooth and
-    // C_h linear.
+    // panels no wider than sigma_h / 4, nor than 1/32 of the span (D_h
+    // narrows as L grows: about sigma_h / sqrt(2 ln L)), where D_h's density
+    // is smooth and C_h linear.
     std::vector<double> breaks{sigma_h * x_lo};
     const double first = std::ceil(map.node_coordinate(offset + sigma_h * x_lo));
     const double last = std::floor(map.node_coordinate(offset + sigma_h * x_hi));
@@ -41,11 +48,12 @@ Rgb exact_height_colour(const ColorMap& map, double sigma_h, double lambda_sum, 
         const double density = std::exp(std::log(k1) + L * log_normal_cdf(x) - 0.5 * x * x) / (sigma_h * std::sqrt(2 * kPi));
         return density * map.evaluate(h + offset);
     };
+    const double panel = std::min(0.25, (x_hi - x_lo) / 32) * sigma_h;
     Rgb sum;
     for (std::size_t i = 0; i + 1 < breaks.size(); ++i) {
         const double a = breaks[i], b = breaks[i + 1];
         if (!(b > a)) continue;
-        const int panels = static_cast<int>(std::min(64.0, std::ceil((b - a) / (0.25 * sigma_h))));
+        const int panels = static_cast<int>(std::min(64.0, std::ceil((b - a) / panel)));
         sum += gauss_legendre_8(weighted, a, b, std::max(1, panels));
     }
     return sum;

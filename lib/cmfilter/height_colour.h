@@ -8,7 +8,8 @@
 // it is within [1e-15, 1 - 1e-15]; there the map is piecewise linear between
 // its nodes (color_map.h), and <C_h, D_h> = int C_h(h) D_h(h) dh is
 // integrated by Gauss-Legendre between the nodes, on panels no wider than
-// sigma_h / 4, where D_h's density is smooth.
+// sigma_h / 4 nor than 1/32 of that range (D_h narrows as L grows), where
+// D_h's density is smooth.
 // The mean visibility of eq. 13 (smith_lambda.h) multiplies it in eq. 14.
 #pragma once
 
