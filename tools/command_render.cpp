@@ -31,6 +31,7 @@ struct RenderArgs {
     int samples = 16;
     int probes = 16;
     bool no_edge_coverage = false;
+    std::string masking = "uncorrelated";
     std::uint64_t seed = 0;
     std::string footprint = "rms";
     std::string aov;
@@ -145,6 +146,10 @@ Status run(const RenderArgs& args)
         return bad_input("--probes " + std::to_string(args.probes) + " is out of range (expected 1 to 64)");
     options.max_probes = args.probes;
     options.edge_coverage = !args.no_edge_coverage;
+    if (args.masking == "correlated")
+        options.masking = MaskingShadowing::DirectionCorrelated;
+    else if (args.masking != "uncorrelated")
+        return bad_input("--masking '" + args.masking + "' is unknown (expected uncorrelated or correlated)");
     if (talk && isatty(STDERR_FILENO)) options.progress = terminal_progress("render");
     auto image = render(*scene, *materials, options);
     if (!image) return image.error();
@@ -185,6 +190,7 @@ Status run(const RenderArgs& args)
         j["samples"] = image->samples;
         j["seed"] = args.seed;
         j["footprint"] = to_string(options.footprint);
+        j["masking"] = args.masking;
         j["edge_coverage"] = options.edge_coverage && *method != RenderMethod::Supersample &&
                              *method != RenderMethod::Reference;
         j["size"] = {image->width, image->height};
@@ -229,6 +235,10 @@ Command setup_render(CLI::App& parent)
         ->capture_default_str();
     app->add_option("--probes", args->probes,
                     "Filter an anisotropic footprint as up to N probes along its major edge (naive, gaussian, exact)")
+        ->capture_default_str();
+    app->add_option("--masking", args->masking,
+                    "Microsurfaces: masking and shadowing independent (uncorrelated, the paper's eq. 13) or correlated "
+                    "by the view's and the light's azimuths (correlated)")
         ->capture_default_str();
     app->add_flag("--no-edge-coverage", args->no_edge_coverage,
                   "naive, gaussian, exact: take the centre ray's surface for the whole pixel, also on silhouettes "

@@ -19,7 +19,7 @@ double resolved_visibility(double height, double sigma_r, double lambda)
 
 HeightAlbedo height_filtered_albedo(const SurfaceMaterial& material, const MicrosurfaceFootprint& footprint,
                                     const HeightDirections& d, HeightRepresentation representation,
-                                    const HeightMomentTable& table, AlbedoCounts& counts)
+                                    const HeightMomentTable& table, AlbedoCounts& counts, MaskingShadowing masking)
 {
     HeightAlbedo out;
     if (representation == HeightRepresentation::Naive) {
@@ -30,8 +30,8 @@ HeightAlbedo height_filtered_albedo(const SurfaceMaterial& material, const Micro
     // Smith's Lambda (eq. 3) for the unresolved slopes along each azimuth.
     const double lambda_o = smith_lambda_gaussian(d.theta_o, footprint.sigma_s(d.phi_o));
     const double lambda_i = smith_lambda_gaussian(d.theta_i, footprint.sigma_s(d.phi_i));
-    out.lambda_sum = lambda_o + lambda_i;
-    out.visibility = mean_visibility(lambda_o, lambda_i);  // eq. 13
+    out.lambda_sum = lambda_sum(lambda_o, lambda_i, d.phi_o - d.phi_i, masking);
+    out.visibility = mean_visibility(lambda_o, lambda_i, d.phi_o - d.phi_i, masking);  // eq. 13
     out.resolved_visibility =
         resolved_visibility(footprint.mean_height, footprint.resolved_sigma_h,
                             smith_lambda_gaussian(d.theta_i, footprint.resolved_sigma_s(d.phi_i)));

@@ -32,6 +32,7 @@
 #include "cmfilter/height_moment_table.h"
 #include "cmfilter/microsurface_footprint.h"
 #include "cmfilter/scene_materials.h"
+#include "cmfilter/smith_lambda.h"
 
 namespace cmfilter {
 
@@ -47,7 +48,7 @@ struct HeightDirections {
 struct HeightAlbedo {
     Rgb albedo;
     double mean = 0, sigma = 0;  // of the heights seen lit (the naive method: the resolved mean, sigma 0)
-    double lambda_sum = 0;       // Lambda_o + Lambda_i (eq. 3)
+    double lambda_sum = 0;       // Lambda_o + Lambda_i (or their correlated form) (eq. 3)
     double visibility = 1;       // eq. 13
     double resolved_visibility = 1;  // V_r
 };
@@ -57,9 +58,12 @@ struct HeightAlbedo {
 double resolved_visibility(double height, double sigma_r, double lambda);
 
 // `table` serves ExactMoments; `counts` counts the table lookups as
-// gaussian_albedo does.
+// gaussian_albedo does. `masking` chooses how the Lambdas combine
+// (smith_lambda.h): the paper's sum (eq. 13), or correlated by the
+// directions' azimuths.
 HeightAlbedo height_filtered_albedo(const SurfaceMaterial& material, const MicrosurfaceFootprint& footprint,
                                     const HeightDirections& directions, HeightRepresentation representation,
-                                    const HeightMomentTable& table, AlbedoCounts& counts);
+                                    const HeightMomentTable& table, AlbedoCounts& counts,
+                                    MaskingShadowing masking = MaskingShadowing::Uncorrelated);
 
 }  // namespace cmfilter

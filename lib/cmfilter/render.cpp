@@ -172,7 +172,8 @@ struct MicrosurfaceFiltered {
 
 MicrosurfaceFiltered filter_microsurface_hit(const SurfaceMaterial& m, const SurfaceHit& h,
                                              const HeightDirections& directions, HeightRepresentation representation,
-                                             int max_probes, const HeightMomentTable& table, AlbedoCounts& counts)
+                                             int max_probes, MaskingShadowing masking, const HeightMomentTable& table,
+                                             AlbedoCounts& counts)
 {
     double au = h.du_dx, av = h.dv_dx, bu = h.du_dy, bv = h.dv_dy;
     if (std::hypot(au, av) < std::hypot(bu, bv)) {
@@ -187,7 +188,7 @@ MicrosurfaceFiltered filter_microsurface_hit(const SurfaceMaterial& m, const Sur
         const double o = (j + 0.5) / count - 0.5;
         const MicrosurfaceFootprint f = filter_microsurface(*m.microsurface, h.u + o * au, h.v + o * av, au / count,
                                                             av / count, bu, bv);
-        const HeightAlbedo a = height_filtered_albedo(m, f, directions, representation, table, counts);
+        const HeightAlbedo a = height_filtered_albedo(m, f, directions, representation, table, counts, masking);
         out.albedo += a.albedo;
         out.mean += a.mean;
         out.sigma += a.sigma;
@@ -309,7 +310,8 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
                     scene.surfaces[static_cast<std::size_t>(hit.surface)], h, normalize(scene.camera.position - h.point),
                     scene.light.direction);
                 const MicrosurfaceFiltered f = filter_microsurface_hit(
-                    m, h, directions, height_representation(options.method), options.max_probes, *height_table, counts);
+                    m, h, directions, height_representation(options.method), options.max_probes, options.masking,
+                    *height_table, counts);
                 out.mean = f.mean;
                 out.sigma = f.sigma;
                 out.lod = f.lod;

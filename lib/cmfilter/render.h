@@ -36,6 +36,7 @@
 #include "cmfilter/footprint_width.h"
 #include "cmfilter/scene.h"
 #include "cmfilter/scene_materials.h"
+#include "cmfilter/smith_lambda.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -69,6 +70,9 @@ struct RenderOptions {
     // (pixel_coverage.h), as the supersampled methods do; false: the centre
     // ray's surface (or the background) for the whole pixel.
     bool edge_coverage = true;
+    // Microsurfaces: how masking and shadowing combine (smith_lambda.h):
+    // independent as in the paper's eq. 13, or correlated by azimuth.
+    MaskingShadowing masking = MaskingShadowing::Uncorrelated;
     std::function<void(double)> progress;  // fraction of rows done, may be empty
 };
 

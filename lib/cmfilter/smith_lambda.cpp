@@ -61,4 +61,35 @@ double mean_visibility(double lambda_o, double lambda_i)
     return (1 + lambda_o) / (1 + lambda_o + lambda_i);  // eq. 13
 }
 
+namespace {
+
+// lambda(phi) of the direction-correlated form, phi folded into [0, pi].
+double azimuth_correlation(double azimuth_difference)
+{
+    const double two_pi = 6.28318530717958647692;
+    double phi = std::fabs(std::remainder(azimuth_difference, two_pi));
+    if (!std::isfinite(phi)) phi = 0;
+    return 4.41 * phi / (4.41 * phi + 1);
+}
+
+}  // namespace
+
+double lambda_sum(double lambda_o, double lambda_i, double azimuth_difference, MaskingShadowing masking)
+{
+    if (masking == MaskingShadowing::Uncorrelated) return lambda_o + lambda_i;
+    return std::max(lambda_o, lambda_i) + azimuth_correlation(azimuth_difference) * std::min(lambda_o, lambda_i);
+}
+
+double mean_visibility(double lambda_o, double lambda_i, double azimuth_difference, MaskingShadowing masking)
+{
+    if (masking == MaskingShadowing::Uncorrelated) return mean_visibility(lambda_o, lambda_i);
+    const double c = azimuth_correlation(azimuth_difference);
+    const bool inf_o = std::isinf(lambda_o), inf_i = std::isinf(lambda_i);
+    if (inf_o && inf_i) return 1 / (1 + c);  // along equal Lambdas
+    if (inf_i) return 0.0;
+    if (inf_o) return 1.0;
+    const double L = std::max(lambda_o, lambda_i) + c * std::min(lambda_o, lambda_i);
+    return std::min(1.0, (1 + lambda_o) / (1 + L));
+}
+
 }  // namespace cmfilter

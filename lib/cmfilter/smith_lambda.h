@@ -29,4 +29,28 @@ double smith_lambda_gaussian_cot(double mu, double sigma_s);
 // Lambda_o = inf alone gives 1.
 double mean_visibility(double lambda_o, double lambda_i);
 
+// Masking and shadowing as eq. 13 takes them (independent: a point's
+// visibility to the viewer and to the light multiply, so the heights seen lit
+// are weighted by P_h^(Lambda_o + Lambda_i)), or correlated by the
+// directions' azimuths: a light behind the viewer sees what the viewer sees.
+// The direction-correlated form (van Ginneken et al. 1998, in the form of
+// Heitz 2014, "Understanding the masking-shadowing function in
+// microfacet-based BRDFs", sec. 6) replaces the sum by
+//     L = max(Lambda_o, Lambda_i) + lambda(phi) min(Lambda_o, Lambda_i),
+//     lambda(phi) = 4.41 phi / (4.41 phi + 1),
+// phi in [0, pi] the azimuth between the two directions: 0 (the light from
+// the viewer's side) gives the larger Lambda alone, pi nearly the sum.
+enum class MaskingShadowing { Uncorrelated, DirectionCorrelated };
+
+// The Lambda sum that weights the heights seen lit, P_h^L (eq. 16): the sum
+// (Uncorrelated) or the form above; phi is folded into [0, pi]. Infinite
+// where either Lambda is.
+double lambda_sum(double lambda_o, double lambda_i, double azimuth_difference, MaskingShadowing masking);
+
+// The share of the viewed microsurface that is lit for that Lambda sum,
+// (1 + Lambda_o) / (1 + L) (eq. 13 for the plain sum), in [0, 1], with the
+// limits of mean_visibility where a Lambda is infinite (the correlated form
+// at phi = 0 sees everything lit when both are).
+double mean_visibility(double lambda_o, double lambda_i, double azimuth_difference, MaskingShadowing masking);
+
 }  // namespace cmfilter

@@ -9,8 +9,10 @@ furthest from the truth), this renders a far patch of the
 bundled microsurface (examples/scenes/plane-microsurface-sand-snow.json's
 material) seen through a narrow camera, so that every pixel looks at the
 angle and its footprint spans several of the longest wavelengths, by every
-method: naive, gaussian, gaussian-exact, exact and the ray-traced reference
-(twice, with other seeds: their difference is the reference's own noise).
+method: naive, gaussian, gaussian-exact, exact, gaussian-exact with
+masking and shadowing correlated by azimuth (render --masking correlated),
+and the ray-traced reference (twice, with other seeds: their difference is
+the reference's own noise).
 `cmfilter compare` gives each method's mean CIEDE2000 against the
 reference. Writes WORK_DIR/height-angles.csv, WORK_DIR/height-angles.png
 (gnuplot) and prints the table of the docs.
@@ -24,7 +26,15 @@ import math
 import os
 import subprocess
 
-METHODS = ["naive", "gaussian", "gaussian-exact", "exact"]
+# Each series: its name and its render options.
+SERIES = {
+    "naive": ["--method", "naive"],
+    "gaussian": ["--method", "gaussian"],
+    "gaussian-exact": ["--method", "gaussian-exact"],
+    "exact": ["--method", "exact"],
+    "gaussian-exact correlated": ["--method", "gaussian-exact", "--masking", "correlated"],
+}
+METHODS = list(SERIES)
 ANGLES = [0, 10, 20, 30, 40, 50, 60, 70, 75, 80, 85, 87, 89]
 SETUPS = {
     "view": "view swept, light overhead",
@@ -59,8 +69,8 @@ def scene_for(setup, angle, size, root):
     }
 
 
-def render(cmfilter, scene, method, output, threads, spp=None, seed=0):
-    command = [cmfilter, "render", scene, "--method", method, "-o", output, "--threads", str(threads), "--json",
+def render(cmfilter, scene, options, output, threads, spp=None, seed=0):
+    command = [cmfilter, "render", scene, *options, "-o", output, "--threads", str(threads), "--json",
                "--seed", str(seed)]
     if spp:
         command += ["--spp", str(spp)]
@@ -90,14 +100,16 @@ def main():
             name = f"{work}/{setup}-{angle}"
             scene = name + ".json"
             json.dump(scene_for(setup, angle, args.size, root), open(scene, "w"), indent=1)
-            reference = render(cmfilter, scene, "reference", name + ".reference.exr", args.threads, args.spp, 1)
-            render(cmfilter, scene, "reference", name + ".reference-b.exr", args.threads, args.spp, 2)
+            reference = render(cmfilter, scene, ["--method", "reference"], name + ".reference.exr", args.threads,
+                               args.spp, 1)
+            render(cmfilter, scene, ["--method", "reference"], name + ".reference-b.exr", args.threads, args.spp, 2)
             row = {"setup": setup, "angle": angle, "reference_spp": reference["samples"],
                    "reference_seconds": round(reference["seconds"], 3),
                    "reference_repeat": mean_de(cmfilter, name + ".reference.exr", name + ".reference-b.exr")}
-            for method in METHODS:
-                render(cmfilter, scene, method, f"{name}.{method}.exr", args.threads)
-                row[method] = mean_de(cmfilter, f"{name}.{method}.exr", name + ".reference.exr")
+            for method, options in SERIES.items():
+                image = f"{name}.{method.replace(' ', '-')}.exr"
+                render(cmfilter, scene, options, image, args.threads)
+                row[method] = mean_de(cmfilter, image, name + ".reference.exr")
             rows.append(row)
             print(setup, angle, {k: (round(v, 3) if isinstance(v, float) else v) for k, v in row.items()}, flush=True)
     out = f"{work}/height-angles.csv"
@@ -107,8 +119,8 @@ def main():
         w.writerows(rows)
     os.replace(out + ".tmp", out)
 
-    print("\n| set-up | angle | naive | gaussian | gaussian-exact | exact | reference repeat |")
-    print("|---|---:|---:|---:|---:|---:|---:|")
+    print("\n| set-up | angle | " + " | ".join(METHODS) + " | reference repeat |")
+    print("|---|---:|" + "---:|" * (len(METHODS) + 1))
     for r in rows:
         print(f"| {r['setup']} | {r['angle']} | " + " | ".join(f"{r[m]:.2f}" for m in METHODS) +
               f" | {r['reference_repeat']:.2f} |")
@@ -123,14 +135,15 @@ def main():
                 d.write("\n\n")
     styles = {"naive": 'pt 9 lc rgb "red"', "gaussian": 'pt 7 lc rgb "blue"',
               "gaussian-exact": 'pt 5 lc rgb "dark-violet"', "exact": 'pt 13 lc rgb "dark-green"',
+              "gaussian-exact correlated": 'pt 4 dt 2 lc rgb "orange"',
               "reference_repeat": 'pt 1 dt 3 lc rgb "gray40"'}
     titles = {"reference_repeat": "reference vs itself (other seed)"}
     with open(f"{work}/height-angles.gp", "w") as g:
-        g.write(f'set terminal pngcairo size 1800,560 font ",11"\nset output "{work}/height-angles.png"\n'
+        g.write(f'set terminal pngcairo size 1800,520 font ",11"\nset output "{work}/height-angles.png"\n'
                 'set multiplot layout 1,4 title "Height-correlated colour (sand-snow microsurface): mean CIEDE2000 '
                 'against the ray-traced heightfield"\n'
-                'set grid\nset xrange [0:90]\nset xtics 10\nset logscale y\nset yrange [0.05:50]\n'
-                'set key at screen 0.5, screen 0.04 center horizontal maxrows 1\nset bmargin 7\nset ylabel "mean CIEDE2000"\n'
+                'set grid\nset xrange [0:90]\nset xtics 10\nset logscale y\nset yrange [0.01:100]\n'
+                'set key bottom left samplen 2\nset ylabel "mean CIEDE2000"\n'
                 'set arrow 1 from 80, graph 0 to 80, graph 1 nohead dt 2 lc rgb "black"\n'
                 'set arrow 2 from graph 0, first 2 to graph 1, first 2 nohead dt 2 lc rgb "black"\n')
         index = 0
@@ -142,7 +155,7 @@ def main():
                              f'{styles[series]} title "{titles.get(series, series)}"')
                 index += 1
             g.write("plot " + ", \\\n     ".join(plots) + "\n")
-            g.write("unset key\n")  # one key, below the first panel's row
+            g.write("unset key\n")  # one key, in the first panel
         g.write("unset multiplot\n")
     subprocess.run(["gnuplot", f"{work}/height-angles.gp"], check=True)
     print(f"wrote {out} and {work}/height-angles.png")
