@@ -10,7 +10,10 @@
 #  3. render the bundled ground-plane scene (fBm through the terrain map, to
 #     the horizon) by the naive and gaussian methods, and time every method
 #     against a reference of at least 1024 rays per pixel at 160 x 90
-#     (cmfilter bench: CSV + chart).
+#     (cmfilter bench: CSV + chart);
+#  4. render the bundled microsurface scene (colour by height: sand in the
+#     hollows, snow on the crests, masked and shadowed) by naive,
+#     gaussian-exact and the ray-traced reference, with each one's error.
 #   bash examples/run.sh CMFILTER_BINARY OUTPUT_DIR
 set -euo pipefail
 cmfilter=${1:?usage: run.sh CMFILTER_BINARY OUTPUT_DIR}
@@ -57,6 +60,18 @@ done
 echo
 echo "bench at 160 x 90 (mean CIEDE2000 against the reference, render seconds):"
 awk -F, 'NR > 1 && $2 != "reference" { printf "  %-36s %8.3f dE00 %10.4f s\n", $2, $11, $10 }' "$out/render/bench.csv"
+
+micro="$root/examples/scenes/plane-microsurface-sand-snow.json"
+for method in naive gaussian-exact reference; do
+  "$cmfilter" render "$micro" --method "$method" -o "$out/render/sand-snow-$method.exr" -q
+  oiiotool "$out/render/sand-snow-$method.exr" --colorconvert linear sRGB -d uint8 -o "$out/render/sand-snow-$method.png"
+done
+echo
+echo "microsurface scene (mean CIEDE2000 against the ray-traced reference):"
+for method in naive gaussian-exact; do
+  "$cmfilter" compare "$out/render/sand-snow-$method.exr" "$out/render/sand-snow-reference.exr" \
+    | awk -v m="$method" '$1 == "dE2000" && $2 == "mean" { printf "  %-16s %8.3f dE00\n", m, $3 }'
+done
 echo
 echo "example outputs in $out:"
 echo "  tables/*.exr      prefiltered colour-map tables (open with oiiotool --info -v or cmfilter info)"
@@ -66,3 +81,4 @@ echo "  filtered/*.png    the bundled driver through each map at LOD 0, 3, 6 by 
 echo "  filtered/summary.txt  mean CIEDE2000 of naive and gaussian against the reference"
 echo "  render/*.png      the ground-plane scene by naive and gaussian; render/plane-fbm-terrain.png: error vs time"
 echo "  render/bench.csv  every method's time and error against the reference (docs/render.md)"
+echo "  render/sand-snow-*.png  the microsurface scene by naive, gaussian-exact and reference (docs/microsurface.md)"

@@ -77,7 +77,9 @@ double azimuth_correlation(double azimuth_difference)
 double lambda_sum(double lambda_o, double lambda_i, double azimuth_difference, MaskingShadowing masking)
 {
     if (masking == MaskingShadowing::Uncorrelated) return lambda_o + lambda_i;
-    return std::max(lambda_o, lambda_i) + azimuth_correlation(azimuth_difference) * std::min(lambda_o, lambda_i);
+    const double larger = std::max(lambda_o, lambda_i);
+    if (std::isinf(larger)) return larger;  // not inf + 0 inf
+    return larger + azimuth_correlation(azimuth_difference) * std::min(lambda_o, lambda_i);
 }
 
 double mean_visibility(double lambda_o, double lambda_i, double azimuth_difference, MaskingShadowing masking)

@@ -21,6 +21,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iterator>
 #include <limits>
@@ -279,4 +280,35 @@ TEST_CASE("the height-filtered albedo of every representation stays finite and i
                                                       counts);
     CHECK(naive.visibility == 1);
     CHECK(naive.albedo.r == doctest::Approx(reference_map_colour(material.map, 0.021).r).epsilon(1e-12));
+}
+
+TEST_CASE("correlated masking and shadowing stays finite and in range, and meets eq. 13 where it should")
+{
+    const double inf = std::numeric_limits<double>::infinity();
+    const double lambdas[] = {0.0, 1e-12, 0.3, 2.0, 1e6, 1e300, inf};
+    const double azimuths[] = {0.0, 0.5, 1.5707963267948966, 3.141592653589793, -2.0, 7.0, 1e9};
+    for (double lo : lambdas)
+        for (double li : lambdas)
+            for (double phi : azimuths) {
+                CAPTURE(lo);
+                CAPTURE(li);
+                CAPTURE(phi);
+                const double v = mean_visibility(lo, li, phi, MaskingShadowing::DirectionCorrelated);
+                CHECK(std::isfinite(v));
+                CHECK(v >= 0);
+                CHECK(v <= 1);
+                const double L = lambda_sum(lo, li, phi, MaskingShadowing::DirectionCorrelated);
+                CHECK_FALSE(std::isnan(L));
+                // Never more than the independent sum, never less than the larger Lambda.
+                CHECK(L <= lo + li);
+                CHECK(L >= std::max(lo, li));
+                CHECK(mean_visibility(lo, li, phi, MaskingShadowing::Uncorrelated) == mean_visibility(lo, li));
+            }
+    // The light from the viewer's side (phi = 0) at the same angle: all seen is lit.
+    CHECK(mean_visibility(0.7, 0.7, 0.0, MaskingShadowing::DirectionCorrelated) == 1.0);
+    CHECK(mean_visibility(inf, inf, 0.0, MaskingShadowing::DirectionCorrelated) == 1.0);
+    // lambda(pi) = 4.41 pi / (4.41 pi + 1), by hand.
+    const double c = 4.41 * 3.141592653589793 / (4.41 * 3.141592653589793 + 1);
+    CHECK(lambda_sum(0.5, 0.25, 3.141592653589793, MaskingShadowing::DirectionCorrelated) ==
+          doctest::Approx(0.5 + c * 0.25).epsilon(1e-12));
 }
