@@ -43,6 +43,7 @@ std::vector<BenchConfiguration> default_bench_configurations()
     std::vector<BenchConfiguration> c;
     c.push_back({RenderMethod::Naive, 1, 256, 256, SigmaSpacing::Sqrt, FootprintWidth::Rms});
     c.push_back({RenderMethod::Exact, 1, 256, 256, SigmaSpacing::Sqrt, FootprintWidth::Rms});
+    c.push_back({RenderMethod::GaussianExact, 1, 256, 256, SigmaSpacing::Sqrt, FootprintWidth::Rms});
     for (int n : {16, 64, 256})
         for (SigmaSpacing s : {SigmaSpacing::Sqrt, SigmaSpacing::Linear})
             c.push_back({RenderMethod::Gaussian, 1, n, n, s, FootprintWidth::Rms});
@@ -227,6 +228,11 @@ Expected<SceneBench> bench_scene(const Scene& scene, std::vector<SurfaceMaterial
             mo.threads = options.threads;
             mo.note = options.note;
             if (auto st = prepare_histograms(scene, materials, mo); !st) return st.error();
+        }
+        if (c.method == RenderMethod::GaussianExact &&
+            std::none_of(materials.begin(), materials.end(), [](const SurfaceMaterial& m) { return m.microsurface.has_value(); })) {
+            if (options.note) options.note(scene.path + ": gaussian-exact: left out (no microsurface: it would be gaussian)");
+            continue;
         }
         BenchRow row;
         row.configuration = c;

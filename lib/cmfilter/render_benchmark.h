@@ -48,6 +48,8 @@ struct BenchConfiguration {
 };
 
 // naive; exact (rms footprint width; only run on scenes it can filter);
+// gaussian-exact (only on scenes with a microsurface, with the tables the
+// materials hold when the bench starts);
 // gaussian with 16 x 16, 64 x 64 and 256 x 256 tables, sqrt and linear sigma
 // spacing (rms footprint width), and the 256 x 256 sqrt table with the area,
 // major and minor footprint widths; gaussian with tables fitted to tolerances
@@ -109,7 +111,8 @@ struct BenchOptions {
 // at most kHistogramMaxValues distinct values (exact_filterable,
 // scene_materials.h), and is left out of the rows otherwise; the histogram
 // pyramids it needs are baked into the materials then, unless they hold them
-// already.
+// already (a microsurface needs none). gaussian-exact runs only on a scene
+// with a microsurface (elsewhere it is gaussian).
 Expected<SceneBench> bench_scene(const Scene& scene, std::vector<SurfaceMaterial>& materials,
                                  const BenchOptions& options);
 
