@@ -12,6 +12,25 @@
 
 using namespace cmfilter;
 
+namespace {
+
+// E[ramp(h)] for a ramp from 0 at p0 to 1 at p1 and h ~ D_h: the tail
+// integral int_p0^p1 (1 - Phi(t / sigma_h)^(L+1)) dt / (p1 - p0), by the
+// trapezoid rule.
+double ramp_tail_mean(double p0, double p1, double sigma_h, double L)
+{
+    const int n = 20000;
+    double sum = 0;
+    for (int k = 0; k <= n; ++k) {
+        const double t = p0 + (p1 - p0) * k / n;
+        const double tail = -std::expm1((L + 1) * std::log(0.5 * std::erfc(-t / (sigma_h * std::sqrt(2.0)))));
+        sum += (k == 0 || k == n) ? 0.5 * tail : tail;
+    }
+    return sum / n;
+}
+
+}  // namespace
+
 TEST_CASE("the normal quantile inverts erfc to 1e-13 from 1e-300 to 1 - 1e-16")
 {
     for (double p : {1e-300, 1e-100, 1e-20, 1e-8, 0.001, 0.02, 0.3, 0.5, 0.7, 0.98, 0.999, 1 - 1e-9, 1 - 1e-15}) {
@@ -46,14 +65,7 @@ TEST_CASE("exact height colour of a ramp map matches the tail integral of D_h")
         for (double L : {0.0, 0.7, 5.0, 100.0, 1e4}) {
             CAPTURE(sigma_h);
             CAPTURE(L);
-            const int n = 20000;
-            double sum = 0;
-            for (int k = 0; k <= n; ++k) {
-                const double t = p0 + (p1 - p0) * k / n;
-                const double tail = -std::expm1((L + 1) * std::log(0.5 * std::erfc(-t / (sigma_h * std::sqrt(2.0)))));
-                sum += (k == 0 || k == n) ? 0.5 * tail : tail;
-            }
-            const double expected = sum / n;
+            const double expected = ramp_tail_mean(p0, p1, sigma_h, L);
             const Rgb got = exact_height_colour(map, sigma_h, L);
             CHECK(got.r == doctest::Approx(expected).epsilon(1e-6).scale(1e-6));
             CHECK(got.g == got.r);
@@ -75,15 +87,9 @@ TEST_CASE("exact height colour about a resolved mean height reads the map at the
         for (double L : {0.0, 2.0, 300.0}) {
             CAPTURE(offset);
             CAPTURE(L);
-            const double sigma_h = 0.03, p0 = -0.05 - offset, p1 = 0.05 - offset;
-            const int n = 20000;
-            double sum = 0;
-            for (int k = 0; k <= n; ++k) {
-                const double t = p0 + (p1 - p0) * k / n;
-                const double tail = -std::expm1((L + 1) * std::log(0.5 * std::erfc(-t / (sigma_h * std::sqrt(2.0)))));
-                sum += (k == 0 || k == n) ? 0.5 * tail : tail;
-            }
-            CHECK(exact_height_colour(map, sigma_h, L, offset).r == doctest::Approx(sum / n).epsilon(1e-6).scale(1e-6));
+            const double sigma_h = 0.03;
+            CHECK(exact_height_colour(map, sigma_h, L, offset).r ==
+                  doctest::Approx(ramp_tail_mean(-0.05 - offset, 0.05 - offset, sigma_h, L)).epsilon(1e-6).scale(1e-6));
         }
     CHECK(exact_height_colour(map, 0, 3, 0.025).r == doctest::Approx(0.75));
 }
