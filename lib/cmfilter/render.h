@@ -19,6 +19,14 @@
 //                (a texture: f bilinear in its level 0) and shaded on its
 //                own; misses count as background;
 //   reference    supersample with at least 1024 rays (the paper's 32 x 32).
+// A microsurface material (scene.h; sec. 5.1) is coloured by height instead:
+// naive C_h of the footprint's mean height, gaussian V T(mean + mu_d,
+// sigma_d) with the paper's fit (eqs. 13, 17-18), gaussian-exact the same
+// with D_h's exact moments, exact V <C_h, D_h> (height_filtered_albedo.h,
+// over the heights the footprint does not resolve, microsurface_footprint.h);
+// supersample and reference trace the displaced plane and its shadow rays
+// (displaced_plane_sample.h) and estimate the eq. 14 albedo per pixel
+// (docs/microsurface.md). gaussian-exact on a driver surface is gaussian.
 // The footprint is the parallelogram of the ray differentials in texture
 // space (surface_hit.h), cut along its major edge into up to max_probes
 // pieces (anisotropic_probes.h), each reduced to one width
