@@ -93,11 +93,17 @@ std::optional<double> first_sign_change(double c0, double c1, double c2, double 
     return std::nullopt;
 }
 
-// The microsurface's exact heights at the n x n nodes of a tile, closed into
-// (n + 1) x (n + 1): each cosine a cos(2 pi (i x + j y) / tile + phase) is the
-// DFT coefficient a e^(i phase) at (i mod n, j mod n), and the node heights
-// the real part of the inverse 2-D DFT (exact at the nodes whatever i and j).
-Expected<std::vector<double>> tabulate_nodes(const GaussianMicrosurface& surface, int n, int threads)
+// What tabulate_nodes tabulates: the heights or their derivative along x or y.
+enum class NodeValue { Height, SlopeX, SlopeY };
+
+// The microsurface's exact heights (or slopes) at the n x n nodes of a tile,
+// closed into (n + 1) x (n + 1): each cosine a cos(2 pi (i x + j y) / tile +
+// phase) is the DFT coefficient a e^(i phase) at (i mod n, j mod n), and the
+// node heights the real part of the inverse 2-D DFT (exact at the nodes
+// whatever i and j); its derivative along x has the coefficient
+// 2 pi i (i / tile) a e^(i phase) (y: j / tile).
+Expected<std::vector<double>> tabulate_nodes(const GaussianMicrosurface& surface, int n, int threads,
+                                             NodeValue value = NodeValue::Height)
 {
     const double tile = surface.tile();
     std::vector<int> row_of(static_cast<std::size_t>(n), -1);
@@ -119,7 +125,11 @@ Expected<std::vector<double>> tabulate_nodes(const GaussianMicrosurface& surface
             rows.emplace_back(static_cast<std::size_t>(n));
             row_index.push_back(jj);
         }
-        rows[row_of[jj]][ii] += std::polar(c.amplitude, c.phase);
+        const double two_pi = 6.28318530717958647692;
+        const std::complex<double> weight = value == NodeValue::SlopeX   ? std::complex<double>(0, two_pi * c.fx)
+                                            : value == NodeValue::SlopeY ? std::complex<double>(0, two_pi * c.fy)
+                                                                         : std::complex<double>(1, 0);
+        rows[row_of[jj]][ii] += weight * std::polar(c.amplitude, c.phase);
     }
     const Fft fft(static_cast<std::size_t>(n));
     for (auto& row : rows) fft.inverse(row.data());
@@ -174,6 +184,14 @@ Expected<Heightfield> Heightfield::create(const GaussianMicrosurface& surface, c
     auto nodes = tabulate_nodes(surface, h.n_, options.threads);
     if (!nodes) return nodes.error();
     h.nodes_ = std::move(nodes.value());
+    if (options.slopes) {
+        auto sx = tabulate_nodes(surface, h.n_, options.threads, NodeValue::SlopeX);
+        if (!sx) return sx.error();
+        auto sy = tabulate_nodes(surface, h.n_, options.threads, NodeValue::SlopeY);
+        if (!sy) return sy.error();
+        h.slope_x_ = std::move(sx.value());
+        h.slope_y_ = std::move(sy.value());
+    }
     const auto [lo, hi] = std::minmax_element(h.nodes_.begin(), h.nodes_.end());
     h.min_height_ = *lo;
     h.max_height_ = *hi;
@@ -193,6 +211,17 @@ double Heightfield::height(double x, double y) const
     const Ray r = local_ray({x, y, 0}, {0, 0, 1});
     const double fx = std::floor(r.u), fy = std::floor(r.v);
     return load_patch(nodes_, n_, static_cast<std::int64_t>(fx), static_cast<std::int64_t>(fy)).at(r.u - fx, r.v - fy);
+}
+
+bool Heightfield::slope(double x, double y, double& sx, double& sy) const
+{
+    if (slope_x_.empty()) return false;
+    const Ray r = local_ray({x, y, 0}, {0, 0, 1});
+    const double fx = std::floor(r.u), fy = std::floor(r.v);
+    const auto ix = static_cast<std::int64_t>(fx), iy = static_cast<std::int64_t>(fy);
+    sx = load_patch(slope_x_, n_, ix, iy).at(r.u - fx, r.v - fy);
+    sy = load_patch(slope_y_, n_, ix, iy).at(r.u - fx, r.v - fy);
+    return true;
 }
 
 double Heightfield::on_surface_tolerance(const Vec3& p) const

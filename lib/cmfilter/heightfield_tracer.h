@@ -46,6 +46,8 @@ struct HeightfieldOptions {
     int texels_per_min_wavelength = 8;  // >= 1
     int max_resolution = 4096;          // N must not exceed it; 1 to 16384
     int threads = 0;                    // for tabulation; <= 0: every hardware thread
+    // Also tabulate the exact slopes (dh/dx, dh/dy) at the nodes, for slope().
+    bool slopes = false;
 };
 
 struct HeightfieldHit {
@@ -75,6 +77,12 @@ public:
     double node_height(std::int64_t i, std::int64_t j) const;
     // The bilinear surface at (x, y), anywhere on the plane.
     double height(double x, double y) const;
+    // The microsurface's slopes (dh/dx, dh/dy) at (x, y): its exact slopes at
+    // the nodes (HeightfieldOptions::slopes), bilinear between them: smooth
+    // slopes with the microsurface's statistics, for slope-coloured maps (the
+    // bilinear patches' own gradients jump at texel edges and are a little
+    // flatter). False, leaving sx and sy alone, when they were not tabulated.
+    bool slope(double x, double y, double& sx, double& sy) const;
 
     // The first crossing of the ray origin + t direction, 0 < t <= t_max.
     // direction: finite and nonzero (it need not be unit; t is in units of its
@@ -106,6 +114,7 @@ private:
     double tile_ = 0;
     double min_height_ = 0, max_height_ = 0;
     std::vector<double> nodes_;  // (N + 1) x (N + 1), the last row and column repeating the first
+    std::vector<double> slope_x_, slope_y_;  // the same for the slopes, when tabulated
     MaxMipmap mipmap_;
 };
 
