@@ -278,7 +278,13 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
                 HeightfieldOptions ho;
                 ho.threads = options.threads;
                 auto field = Heightfield::create(*materials[i].microsurface, ho);
-                if (!field) return Error{field.error().kind, "surface " + std::to_string(i) + ": " + field.error().message};
+                if (!field)
+                    return Error{field.error().kind,
+                                 scene.path + ": /surfaces/" + std::to_string(i) + "/material/microsurface: " +
+                                     to_string(options.method) +
+                                     " traces one tile tabulated at 8 texels per shortest wavelength, at most 4096 "
+                                     "per side (a shorter tile or a longer min_wavelength fits): " +
+                                     field.error().message};
                 heightfields[i].emplace(std::move(*field));
                 image.shaded.assign(3 * pixels, 0.0f);
             }
