@@ -9,6 +9,46 @@
 
 namespace cmfilter {
 
+Expected<std::vector<float>> image_rgb_texels(const ImageData& img, const std::string& path, int start_x,
+                                              int start_y, int step_x, int step_y, int count)
+{
+    std::vector<float> rgb(static_cast<std::size_t>(count) * 3);
+    for (int i = 0; i < count; ++i) {
+        const int x = start_x + i * step_x, y = start_y + i * step_y;
+        const float* p = img.pixels.data() + (static_cast<std::size_t>(y) * img.width + x) * img.channels;
+        for (int ch = 0; ch < 3; ++ch) {
+            const float v = img.channels >= 3 ? p[ch] : p[0];
+            if (!std::isfinite(v)) {
+                std::ostringstream msg;
+                msg << "'" << path << "' has a non-finite texel at (" << x << ", " << y
+                    << ") channel " << ch << ": " << v << "; expected finite colours";
+                return bad_input(msg.str());
+            }
+            rgb[3 * i + ch] = v;
+        }
+    }
+    return rgb;
+}
+
+Expected<ColorMapProvenance> image_map_provenance(const std::string& path, const ImageData& img,
+                                                  const std::string& selection, const ImageColorSpace& space,
+                                                  const ColorConfig& config)
+{
+    auto hash = sha256_file_hex(path);
+    if (!hash) return hash.error();
+    ColorMapProvenance prov;
+    prov.path = path;
+    prov.sha256 = *hash;
+    prov.image_width = img.width;
+    prov.image_height = img.height;
+    prov.selection = selection;
+    prov.colorspace = space.colorspace;
+    prov.colorspace_rule = space.rule;
+    prov.linear_space = config.scene_linear_name();
+    prov.ocio_config = config.source();
+    return prov;
+}
+
 Expected<LoadedColorMap> load_color_map(const ColorMapLoadOptions& options,
                                         const ColorConfig& config)
 {
@@ -56,22 +96,9 @@ Expected<LoadedColorMap> load_color_map(const ColorMapLoadOptions& options,
         return bad_input(msg.str());
     }
 
-    // Gather RGB (grey replicated), rejecting non-finite texels.
-    std::vector<float> rgb(static_cast<std::size_t>(count) * 3);
-    for (int i = 0; i < count; ++i) {
-        const int x = start_x + i * step_x, y = start_y + i * step_y;
-        const float* p = img.pixels.data() + (static_cast<std::size_t>(y) * img.width + x) * img.channels;
-        for (int ch = 0; ch < 3; ++ch) {
-            const float v = img.channels >= 3 ? p[ch] : p[0];
-            if (!std::isfinite(v)) {
-                std::ostringstream msg;
-                msg << "'" << options.path << "' has a non-finite texel at (" << x << ", " << y
-                    << ") channel " << ch << ": " << v << "; expected finite colours";
-                return bad_input(msg.str());
-            }
-            rgb[3 * i + ch] = v;
-        }
-    }
+    auto texels = image_rgb_texels(img, options.path, start_x, start_y, step_x, step_y, count);
+    if (!texels) return texels.error();
+    std::vector<float>& rgb = *texels;
 
     auto space = decide_image_colorspace(img, options.path, options.colorspace, "--colorspace", config);
     if (!space) return space.error();
@@ -85,18 +112,9 @@ Expected<LoadedColorMap> load_color_map(const ColorMapLoadOptions& options,
     for (int i = 0; i < count; ++i) out.map.texels[i] = {rgb[3 * i], rgb[3 * i + 1], rgb[3 * i + 2]};
     if (auto st = validate(out.map, "'" + options.path + "'"); !st) return st.error();
 
-    auto hash = sha256_file_hex(options.path);
-    if (!hash) return hash.error();
-    ColorMapProvenance& prov = out.provenance;
-    prov.path = options.path;
-    prov.sha256 = *hash;
-    prov.image_width = img.width;
-    prov.image_height = img.height;
-    prov.selection = selection;
-    prov.colorspace = space->colorspace;
-    prov.colorspace_rule = space->rule;
-    prov.linear_space = config.scene_linear_name();
-    prov.ocio_config = config.source();
+    auto provenance = image_map_provenance(options.path, img, selection, *space, config);
+    if (!provenance) return provenance.error();
+    out.provenance = std::move(*provenance);
     return out;
 }
 

@@ -8,9 +8,12 @@
 #include "cmfilter/color_config.h"
 #include "cmfilter/color_map.h"
 #include "cmfilter/error.h"
+#include "cmfilter/image_colorspace.h"
+#include "cmfilter/image_reading.h"
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace cmfilter {
 
@@ -40,6 +43,17 @@ struct LoadedColorMap {
     ColorMap map;
     ColorMapProvenance provenance;
 };
+
+// Shared by the map loaders (slope_color_map_loading.h too):
+// `count` texels of `img` from (start_x, start_y) in steps of (step_x,
+// step_y) as interleaved RGB (grey replicated), BadInput for a non-finite
+// one;
+Expected<std::vector<float>> image_rgb_texels(const ImageData& img, const std::string& path, int start_x,
+                                              int start_y, int step_x, int step_y, int count);
+// and the provenance of a map read from `img` at `path` (hashing the file).
+Expected<ColorMapProvenance> image_map_provenance(const std::string& path, const ImageData& img,
+                                                  const std::string& selection, const ImageColorSpace& space,
+                                                  const ColorConfig& config);
 
 Expected<LoadedColorMap> load_color_map(const ColorMapLoadOptions& options,
                                         const ColorConfig& config);

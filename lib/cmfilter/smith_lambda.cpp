@@ -1,5 +1,7 @@
 #include "cmfilter/smith_lambda.h"
 
+#include "cmfilter/scaled_erfc.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -9,17 +11,6 @@ namespace cmfilter {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-// erfc(a) e^{a^2}, for a >= 0: the continued fraction where erfc underflows
-// or loses its digits, erfc itself below.
-double scaled_erfc(double a)
-{
-    if (a < 4) return std::erfc(a) * std::exp(a * a);
-    // Lentz's continued fraction of erfc(a) e^{a^2} sqrt(pi) = 1 / (a + (1/2) / (a + 1 / (a + (3/2) / (a + ...)))).
-    double f = a;
-    for (int k = 60; k >= 1; --k) f = a + (0.5 * k) / f;
-    return 1.0 / (f * std::sqrt(kPi));
-}
 
 }  // namespace
 
