@@ -33,7 +33,11 @@ MicrosurfaceFootprint filter_microsurface(const GaussianMicrosurface& surface, d
     double variance = 0, resolved = 0;
     for (const GaussianMicrosurface::Cosine& k : surface.cosines()) {
         const double s = sinc(kPi * (k.fx * e1u + k.fy * e1v)) * sinc(kPi * (k.fx * e2u + k.fy * e2v));
-        out.mean_height += s * k.amplitude * std::cos(2 * kPi * (k.fx * u + k.fy * v) + k.phase);
+        const double angle = 2 * kPi * (k.fx * u + k.fy * v) + k.phase;
+        out.mean_height += s * k.amplitude * std::cos(angle);
+        const double along = -2 * kPi * s * k.amplitude * std::sin(angle);
+        out.mean_slope_x += along * k.fx;
+        out.mean_slope_y += along * k.fy;
         const double unresolved = 0.5 * k.amplitude * k.amplitude * (1 - s * s);
         variance += unresolved;
         const double w = unresolved * 4 * kPi * kPi;

@@ -123,3 +123,26 @@ TEST_CASE("the resolved part's spread is the spread of the box-filtered heights 
     CHECK(f.resolved_sigma_h * f.resolved_sigma_h + f.sigma_h * f.sigma_h ==
           doctest::Approx(s.sigma_h() * s.sigma_h()).epsilon(1e-9));
 }
+
+TEST_CASE("the resolved slopes are the mean slopes over the footprint")
+{
+    const GaussianMicrosurface s = test_surface();
+    for (double w : {0.0, 0.02, 0.15}) {
+        CAPTURE(w);
+        const double e1u = w, e1v = 0.25 * w, e2u = -0.1 * w, e2v = 0.7 * w;
+        const MicrosurfaceFootprint f = filter_microsurface(s, 0.61, 2.3, e1u, e1v, e2u, e2v);
+        // The mean of the gradient over the parallelogram, on a midpoint grid.
+        const int n = w > 0 ? 300 : 1;
+        double gx = 0, gy = 0;
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                const double a = (i + 0.5) / n - 0.5, b = (j + 0.5) / n - 0.5;
+                double dx = 0, dy = 0;
+                s.gradient(0.61 + a * e1u + b * e2u, 2.3 + a * e1v + b * e2v, dx, dy);
+                gx += dx / (n * n);
+                gy += dy / (n * n);
+            }
+        CHECK(f.mean_slope_x == doctest::Approx(gx).epsilon(1e-4).scale(0.1));
+        CHECK(f.mean_slope_y == doctest::Approx(gy).epsilon(1e-4).scale(0.1));
+    }
+}
