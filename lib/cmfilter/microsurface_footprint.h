@@ -6,7 +6,9 @@
 // box-filtered mean
 //     s a cos(2 pi <f, c> + phi),   s = sinc(pi <f, e1>) sinc(pi <f, e2>),
 // (sinc x = sin x / x): the resolved height at the pixel is the sum of these,
-// exact for a box pixel, and its gradient the box-filtered slopes. What the footprint does not resolve is the spread of
+// exact for a box pixel, and its gradient the box-filtered slopes
+// (resolved_slope, apart: it costs a sine per cosine that height-coloured
+// pixels do not need). What the footprint does not resolve is the spread of
 // the heights about that mean: averaged over the surface, its variance is
 //     sigma_u^2 = sum_k a_k^2 (1 - s_k^2) / 2,
 // and the unresolved slopes have the covariance
@@ -30,7 +32,6 @@ namespace cmfilter {
 
 struct MicrosurfaceFootprint {
     double mean_height = 0;                      // resolved: the box-filtered height at the centre
-    double mean_slope_x = 0, mean_slope_y = 0;   // resolved: its gradient, the box-filtered slopes
     double sigma_h = 0;                          // unresolved height deviation
     double slope_xx = 0, slope_xy = 0, slope_yy = 0;  // unresolved slope covariance S
     double resolved_sigma_h = 0;                 // sigma_r
@@ -46,5 +47,13 @@ struct MicrosurfaceFootprint {
 // the microsurface's units; zero edges: a point.
 MicrosurfaceFootprint filter_microsurface(const GaussianMicrosurface& surface, double u, double v, double e1u,
                                           double e1v, double e2u, double e2v);
+
+// The resolved slopes over the same footprint: the gradient of the resolved
+// height, the mean of (dh/dx, dh/dy) over the parallelogram.
+struct ResolvedSlope {
+    double x = 0, y = 0;
+};
+ResolvedSlope resolved_slope(const GaussianMicrosurface& surface, double u, double v, double e1u, double e1v,
+                             double e2u, double e2v);
 
 }  // namespace cmfilter

@@ -130,7 +130,7 @@ TEST_CASE("the resolved slopes are the mean slopes over the footprint")
     for (double w : {0.0, 0.02, 0.15}) {
         CAPTURE(w);
         const double e1u = w, e1v = 0.25 * w, e2u = -0.1 * w, e2v = 0.7 * w;
-        const MicrosurfaceFootprint f = filter_microsurface(s, 0.61, 2.3, e1u, e1v, e2u, e2v);
+        const ResolvedSlope f = resolved_slope(s, 0.61, 2.3, e1u, e1v, e2u, e2v);
         // The mean of the gradient over the parallelogram, on a midpoint grid.
         const int n = w > 0 ? 300 : 1;
         double gx = 0, gy = 0;
@@ -142,7 +142,7 @@ TEST_CASE("the resolved slopes are the mean slopes over the footprint")
                 gx += dx / (n * n);
                 gy += dy / (n * n);
             }
-        CHECK(f.mean_slope_x == doctest::Approx(gx).epsilon(1e-4).scale(0.1));
-        CHECK(f.mean_slope_y == doctest::Approx(gy).epsilon(1e-4).scale(0.1));
+        CHECK(f.x == doctest::Approx(gx).epsilon(1e-4).scale(0.1));
+        CHECK(f.y == doctest::Approx(gy).epsilon(1e-4).scale(0.1));
     }
 }
