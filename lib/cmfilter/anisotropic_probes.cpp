@@ -20,6 +20,8 @@ FootprintProbes footprint_probes(double e1u, double e1v, double e2u, double e2v,
     }
     p.step_u = major_u;
     p.step_v = major_v;
+    p.minor_u = minor_u;
+    p.minor_v = minor_v;
     p.width = footprint_width(choice, major_u / p.count, major_v / p.count, minor_u, minor_v);
     return p;
 }

@@ -17,6 +17,7 @@ namespace cmfilter {
 struct FootprintProbes {
     int count = 1;
     double step_u = 0, step_v = 0;  // the major edge: probe j at c + ((j + 0.5) / count - 0.5) (step_u, step_v)
+    double minor_u = 0, minor_v = 0;  // the other edge, each piece's whole
     double width = 0;               // of each piece
 };
 

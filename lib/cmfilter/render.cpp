@@ -163,7 +163,7 @@ HeightDirections height_directions(const Surface& surface, const SurfaceHit& h, 
 
 // A microsurface over a hit's footprint: the parallelogram of the ray
 // differentials cut along its longer edge into up to max_probes pieces
-// (as anisotropic_probes.h does), each filtered exactly
+// (anisotropic_probes.h), each filtered exactly
 // (microsurface_footprint.h); the albedos and AOVs averaged.
 struct MicrosurfaceFiltered {
     Rgb albedo;
@@ -175,14 +175,10 @@ MicrosurfaceFiltered filter_microsurface_hit(const SurfaceMaterial& m, const Sur
                                              int max_probes, MaskingShadowing masking, const HeightMomentTable& table,
                                              AlbedoCounts& counts)
 {
-    double au = h.du_dx, av = h.dv_dx, bu = h.du_dy, bv = h.dv_dy;
-    if (std::hypot(au, av) < std::hypot(bu, bv)) {
-        std::swap(au, bu);
-        std::swap(av, bv);
-    }
-    const double major = std::hypot(au, av), minor = std::hypot(bu, bv);
-    const int count = minor > 0 ? static_cast<int>(std::min<double>(std::max(1, max_probes), std::ceil(major / minor)))
-                                : std::max(1, max_probes);
+    const FootprintProbes probes =
+        footprint_probes(h.du_dx, h.dv_dx, h.du_dy, h.dv_dy, max_probes, FootprintWidth::Rms);
+    const int count = probes.count;
+    const double au = probes.step_u, av = probes.step_v, bu = probes.minor_u, bv = probes.minor_v;
     MicrosurfaceFiltered out;
     for (int j = 0; j < count; ++j) {
         const double o = (j + 0.5) / count - 0.5;
@@ -196,7 +192,7 @@ MicrosurfaceFiltered filter_microsurface_hit(const SurfaceMaterial& m, const Sur
     out.albedo = (1.0 / count) * out.albedo;
     out.mean /= count;
     out.sigma /= count;
-    out.lod = std::log2(std::max({major / count, minor, 1e-300}));
+    out.lod = std::log2(std::max({std::hypot(au, av) / count, std::hypot(bu, bv), 1e-300}));
     return out;
 }
 
