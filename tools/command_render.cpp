@@ -114,6 +114,8 @@ Status run(const RenderArgs& args)
         msg << "--shortcut " << *args.shortcut << " is invalid (expected a CIEDE2000 difference >= 0; 0 turns it off)";
         return bad_input(msg.str());
     }
+    if (args.masking != "uncorrelated" && args.masking != "correlated")
+        return bad_input("--masking '" + args.masking + "' is unknown (expected uncorrelated or correlated)");
     const std::string aov_paths[3] = {args.aov + ".mean.exr", args.aov + ".sigma.exr", args.aov + ".lod.exr"};
     const std::string shaded_path = args.aov + ".shaded.exr";
     if (!args.aov.empty()) {
@@ -146,10 +148,7 @@ Status run(const RenderArgs& args)
         return bad_input("--probes " + std::to_string(args.probes) + " is out of range (expected 1 to 64)");
     options.max_probes = args.probes;
     options.edge_coverage = !args.no_edge_coverage;
-    if (args.masking == "correlated")
-        options.masking = MaskingShadowing::DirectionCorrelated;
-    else if (args.masking != "uncorrelated")
-        return bad_input("--masking '" + args.masking + "' is unknown (expected uncorrelated or correlated)");
+    if (args.masking == "correlated") options.masking = MaskingShadowing::DirectionCorrelated;
     if (talk && isatty(STDERR_FILENO)) options.progress = terminal_progress("render");
     auto image = render(*scene, *materials, options);
     if (!image) return image.error();
