@@ -1,5 +1,6 @@
 // cmfilter-make-luts: writes the example colour maps that ship in luts/.
-// Each map is a 256 x 1 RGB 8-bit PNG whose texels are sRGB-encoded values;
+// Each map is an RGB 8-bit PNG whose texels are sRGB-encoded values (256 x 1
+// gradients, and one 64 x 64 slope-vector map);
 // every map is defined by a closed-form formula, stated in the comment above
 // the function that computes it, evaluated in double precision and rounded
 // to the nearest 8-bit code. Texel i covers the map domain [i/256, (i+1)/256)
@@ -154,6 +155,25 @@ EncodedColor narrow_band(int i)
     return std::fabs((i + 0.5) - band_centre) <= band_half_width ? bright_yellow : dark_grey;
 }
 
+// A hue h in [0, 1) at saturation s and value 1, by the HSV formula of
+// hue-ramp.png: each channel 255 (1 - s (1 - unit channel)).
+EncodedColor hue_at(double h, double saturation)
+{
+    const double sector = 6.0 * (h - std::floor(h));
+    const double x = 1.0 - std::fabs(std::fmod(sector, 2.0) - 1.0);
+    EncodedColor unit{0, 0, 0};
+    switch (std::min(5, static_cast<int>(sector))) {
+        case 0: unit = {1, x, 0}; break;
+        case 1: unit = {x, 1, 0}; break;
+        case 2: unit = {0, 1, x}; break;
+        case 3: unit = {0, x, 1}; break;
+        case 4: unit = {x, 0, 1}; break;
+        default: unit = {1, 0, x}; break;
+    }
+    const auto channel = [&](double c) { return 255.0 * (1.0 - saturation * (1.0 - c)); };
+    return {channel(unit.r), channel(unit.g), channel(unit.b)};
+}
+
 // ---------------------------------------------------------------------------
 // hue-ramp.png: a full hue circle at full saturation and value, computed in
 // encoded space with the standard HSV -> RGB formula. Texel i has hue
@@ -162,26 +182,58 @@ EncodedColor narrow_band(int i)
 // (1,X,0), (X,1,0), (0,1,X), (0,X,1), (X,0,1), (1,0,X) for floor(H) = 0..5,
 // each scaled by 255.
 // ---------------------------------------------------------------------------
-EncodedColor hue_ramp(int i)
+EncodedColor hue_ramp(int i) { return hue_at(static_cast<double>(i) / kTexelCount, 1.0); }
+
+// ---------------------------------------------------------------------------
+// grass-rock.png: a steepness map, laid over slope angles [0, 90] degrees
+// (texel i at angle 90 i / 255): grass on the flat, rock on the slopes, a dark
+// cliff face on the steepest. Keys (sRGB-encoded) blended as terrain.png's:
+//   0 and 25 degrees  grass (92, 148, 51)
+//   35 and 60 degrees rock  (140, 128, 115)
+//   70 and 90 degrees cliff (64, 56, 51)
+// ---------------------------------------------------------------------------
+EncodedColor grass_rock(int i)
 {
-    const double sector = 6.0 * i / kTexelCount;  // H = h / 60, in [0, 6)
-    const double x = 1.0 - std::fabs(std::fmod(sector, 2.0) - 1.0);
-    EncodedColor unit{0, 0, 0};
-    switch (static_cast<int>(sector)) {
-        case 0: unit = {1, x, 0}; break;
-        case 1: unit = {x, 1, 0}; break;
-        case 2: unit = {0, 1, x}; break;
-        case 3: unit = {0, x, 1}; break;
-        case 4: unit = {x, 0, 1}; break;
-        default: unit = {1, 0, x}; break;
-    }
-    return {255.0 * unit.r, 255.0 * unit.g, 255.0 * unit.b};
+    static const std::array<Key, 6> keys = {{
+        {0.0 / 90, {92, 148, 51}},   // grass
+        {25.0 / 90, {92, 148, 51}},  // grass
+        {35.0 / 90, {140, 128, 115}},  // rock
+        {60.0 / 90, {140, 128, 115}},  // rock
+        {70.0 / 90, {64, 56, 51}},     // cliff
+        {90.0 / 90, {64, 56, 51}},     // cliff
+    }};
+    return keyed(keys, i);
+}
+
+
+// ---------------------------------------------------------------------------
+// slope-wheel.png: a 64 x 64 slope-vector map, laid over the slope plane
+// [-s_max, s_max]^2 (row 0 at s_y = +s_max, column 0 at s_x = -s_max). Texel
+// (i, j) has the normalised slope a = -1 + (2 i + 1) / 64, b = 1 - (2 j + 1) /
+// 64; its hue is the slope's direction, atan2(b, a) / (2 pi), and its
+// saturation min(1, 2 sqrt(a^2 + b^2)): white on the flat, full colour from
+// half of s_max on.
+// ---------------------------------------------------------------------------
+constexpr int kWheelSide = 64;
+
+EncodedColor slope_wheel(int i, int j)
+{
+    const double a = -1.0 + (2.0 * i + 1.0) / kWheelSide, b = 1.0 - (2.0 * j + 1.0) / kWheelSide;
+    const double pi = 3.14159265358979323846;
+    return hue_at(std::atan2(b, a) / (2 * pi), std::min(1.0, 2 * std::hypot(a, b)));
 }
 
 struct ColorMapDefinition {
     const char* file_name;
-    std::function<EncodedColor(int)> texel;
+    std::function<EncodedColor(int, int)> texel;  // (column, row)
+    int width = kTexelCount, height = 1;
 };
+
+// A 256 x 1 gradient's definition.
+ColorMapDefinition gradient(const char* file_name, EncodedColor (*texel)(int))
+{
+    return {file_name, [texel](int i, int) { return texel(i); }};
+}
 
 std::uint8_t to_code(double encoded)
 {
@@ -191,28 +243,29 @@ std::uint8_t to_code(double encoded)
 std::vector<std::uint8_t> evaluate(const ColorMapDefinition& map)
 {
     std::vector<std::uint8_t> pixels;
-    pixels.reserve(3 * kTexelCount);
-    for (int i = 0; i < kTexelCount; ++i) {
-        const EncodedColor c = map.texel(i);
-        pixels.push_back(to_code(c.r));
-        pixels.push_back(to_code(c.g));
-        pixels.push_back(to_code(c.b));
-    }
+    pixels.reserve(static_cast<std::size_t>(3 * map.width * map.height));
+    for (int j = 0; j < map.height; ++j)
+        for (int i = 0; i < map.width; ++i) {
+            const EncodedColor c = map.texel(i, j);
+            pixels.push_back(to_code(c.r));
+            pixels.push_back(to_code(c.g));
+            pixels.push_back(to_code(c.b));
+        }
     return pixels;
 }
 
-// Writes `pixels` as a 256 x 1 RGB 8-bit sRGB PNG at `destination`, via a
+// Writes `pixels` as a width x height RGB 8-bit sRGB PNG at `destination`, via a
 // temporary file in the same directory (same extension, so OpenImageIO picks
 // the PNG writer) that is renamed into place only once fully written.
 // Returns an empty string on success, otherwise a message naming the path.
-std::string write_png_atomically(const std::filesystem::path& destination,
+std::string write_png_atomically(const std::filesystem::path& destination, int width, int height,
                                  const std::vector<std::uint8_t>& pixels)
 {
     const std::filesystem::path temp =
         destination.parent_path() / ("." + destination.stem().string() + ".tmp" +
                                      std::to_string(::getpid()) + destination.extension().string());
 
-    OIIO::ImageSpec spec(kTexelCount, 1, 3, OIIO::TypeDesc::UINT8);
+    OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
     spec.attribute("oiio:ColorSpace", "sRGB");
 
     auto output = OIIO::ImageOutput::create(temp.string());
@@ -246,7 +299,7 @@ int main(int argc, char** argv)
 {
     if (argc != 2) {
         std::cerr << "usage: cmfilter-make-luts OUTPUT_DIRECTORY\n"
-                     "Writes the example colour maps (256 x 1 RGB 8-bit sRGB PNGs) into\n"
+                     "Writes the example colour maps (RGB 8-bit sRGB PNGs) into\n"
                      "OUTPUT_DIRECTORY, replacing any files of the same names.\n";
         return 1;
     }
@@ -259,12 +312,13 @@ int main(int argc, char** argv)
     }
 
     const std::vector<ColorMapDefinition> maps = {
-        {"terrain.png", terrain},         {"stripes.png", stripes},
-        {"step.png", step},               {"narrow-band.png", narrow_band},
-        {"hue-ramp.png", hue_ramp},       {"sand-snow.png", sand_snow},
+        gradient("terrain.png", terrain),         gradient("stripes.png", stripes),
+        gradient("step.png", step),               gradient("narrow-band.png", narrow_band),
+        gradient("hue-ramp.png", hue_ramp),       gradient("sand-snow.png", sand_snow),
+        gradient("grass-rock.png", grass_rock),   {"slope-wheel.png", slope_wheel, kWheelSide, kWheelSide},
     };
     for (const ColorMapDefinition& map : maps) {
-        const std::string error = write_png_atomically(output_directory / map.file_name, evaluate(map));
+        const std::string error = write_png_atomically(output_directory / map.file_name, map.width, map.height, evaluate(map));
         if (!error.empty()) {
             std::cerr << "cmfilter-make-luts: " << error << "\n";
             return 2;

@@ -25,6 +25,12 @@ std::optional<DisplacedPlaneSample> trace_displaced_plane(const Surface& plane, 
     DisplacedPlaneSample s;
     s.t = hit->t;  // d has length k, so local t is the scene distance
     s.height = hit->height;
+    s.x = hit->point.x;
+    s.y = hit->point.y;
+    if (!heightfield.slope(s.x, s.y, s.slope_x, s.slope_y)) {
+        s.slope_x = -hit->normal.x / hit->normal.z;
+        s.slope_y = -hit->normal.y / hit->normal.z;
+    }
     const Vec3 l = normalize(local_direction(to_light));
     s.light_cosine = std::max(0.0, dot(hit->normal, l));
     s.lit = s.light_cosine > 0 && !heightfield.occluded(hit->point, l);

@@ -19,6 +19,10 @@ struct DisplacedPlaneSample {
     double height = 0;      // of the hit, texture units: C_h's argument
     bool lit = false;       // the shadow ray reaches the light
     double light_cosine = 0;  // max(0, <m, l>) for the hit's micro-normal m
+    double x = 0, y = 0;      // the hit's texture coordinates (u, v)
+    // The microsurface's slopes (dh/du, dh/dv) at the hit: the heightfield's
+    // tabulated ones (HeightfieldOptions::slopes), else its bilinear patch's.
+    double slope_x = 0, slope_y = 0;
 };
 
 // The ray (unit direction) against the displaced plane seen from the side

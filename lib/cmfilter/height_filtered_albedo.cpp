@@ -17,6 +17,21 @@ double resolved_visibility(double height, double sigma_r, double lambda)
     return std::exp(lambda * log_phi);  // eq. 2
 }
 
+MicrosurfaceVisibility microsurface_visibility(const MicrosurfaceFootprint& footprint, const HeightDirections& d,
+                                               MaskingShadowing masking)
+{
+    MicrosurfaceVisibility v;
+    // Smith's Lambda (eq. 3) for the unresolved slopes along each azimuth.
+    v.lambda_o = smith_lambda_gaussian(d.theta_o, footprint.sigma_s(d.phi_o));
+    v.lambda_i = smith_lambda_gaussian(d.theta_i, footprint.sigma_s(d.phi_i));
+    v.lambda_sum = lambda_sum(v.lambda_o, v.lambda_i, d.phi_o - d.phi_i, masking);
+    v.visibility = mean_visibility(v.lambda_o, v.lambda_i, d.phi_o - d.phi_i, masking);  // eq. 13
+    v.resolved_visibility =
+        resolved_visibility(footprint.mean_height, footprint.resolved_sigma_h,
+                            smith_lambda_gaussian(d.theta_i, footprint.resolved_sigma_s(d.phi_i)));
+    return v;
+}
+
 HeightAlbedo height_filtered_albedo(const SurfaceMaterial& material, const MicrosurfaceFootprint& footprint,
                                     const HeightDirections& d, HeightRepresentation representation,
                                     const HeightMomentTable& table, AlbedoCounts& counts, MaskingShadowing masking)
@@ -24,24 +39,22 @@ HeightAlbedo height_filtered_albedo(const SurfaceMaterial& material, const Micro
     HeightAlbedo out;
     if (representation == HeightRepresentation::Naive) {
         out.albedo = material.map.evaluate(footprint.mean_height);
+        out.colour = out.albedo;
         out.mean = footprint.mean_height;
         return out;
     }
-    // Smith's Lambda (eq. 3) for the unresolved slopes along each azimuth.
-    const double lambda_o = smith_lambda_gaussian(d.theta_o, footprint.sigma_s(d.phi_o));
-    const double lambda_i = smith_lambda_gaussian(d.theta_i, footprint.sigma_s(d.phi_i));
-    out.lambda_sum = lambda_sum(lambda_o, lambda_i, d.phi_o - d.phi_i, masking);
-    out.visibility = mean_visibility(lambda_o, lambda_i, d.phi_o - d.phi_i, masking);  // eq. 13
-    out.resolved_visibility =
-        resolved_visibility(footprint.mean_height, footprint.resolved_sigma_h,
-                            smith_lambda_gaussian(d.theta_i, footprint.resolved_sigma_s(d.phi_i)));
-    const double v = out.visibility * out.resolved_visibility;
+    const MicrosurfaceVisibility visibility = microsurface_visibility(footprint, d, masking);
+    out.lambda_sum = visibility.lambda_sum;
+    out.visibility = visibility.visibility;
+    out.resolved_visibility = visibility.resolved_visibility;
+    const double v = visibility.total();
     if (representation == HeightRepresentation::Exact) {
         // eq. 14: V <C_h, D_h>, D_h exactly (eq. 16).
         const HeightMoments moments = exact_height_moments(out.lambda_sum, footprint.sigma_h);
         out.mean = footprint.mean_height + moments.mean;
         out.sigma = moments.sigma;
-        out.albedo = v * exact_height_colour(material.map, footprint.sigma_h, out.lambda_sum, footprint.mean_height);
+        out.colour = exact_height_colour(material.map, footprint.sigma_h, out.lambda_sum, footprint.mean_height);
+        out.albedo = v * out.colour;
         return out;
     }
     const HeightMoments moments = representation == HeightRepresentation::PaperFit
@@ -49,7 +62,8 @@ HeightAlbedo height_filtered_albedo(const SurfaceMaterial& material, const Micro
                                       : table.lookup(out.lambda_sum, footprint.sigma_h);
     out.mean = footprint.mean_height + moments.mean;
     out.sigma = moments.sigma;
-    out.albedo = v * gaussian_albedo(material, out.mean, out.sigma, counts);  // eq. 14 with eq. 10
+    out.colour = gaussian_albedo(material, out.mean, out.sigma, counts);  // eq. 10
+    out.albedo = v * out.colour;                                          // eq. 14
     return out;
 }
 

@@ -45,8 +45,24 @@ struct HeightDirections {
     double theta_o = 0, phi_o = 0, theta_i = 0, phi_i = 0;
 };
 
+// Eq. 13's mean visibility for the unresolved slopes and V_r for the
+// resolved heights; their product shadows every microsurface colour layer
+// (eqs. 14 and 19).
+struct MicrosurfaceVisibility {
+    double lambda_o = 0, lambda_i = 0;
+    double lambda_sum = 0;           // Lambda_o + Lambda_i (or their correlated form) (eq. 3)
+    double visibility = 1;           // eq. 13
+    double resolved_visibility = 1;  // V_r
+    double total() const { return visibility * resolved_visibility; }
+};
+
+MicrosurfaceVisibility microsurface_visibility(const MicrosurfaceFootprint& footprint,
+                                               const HeightDirections& directions,
+                                               MaskingShadowing masking = MaskingShadowing::Uncorrelated);
+
 struct HeightAlbedo {
-    Rgb albedo;
+    Rgb albedo;  // visibility * resolved_visibility * colour (naive: colour)
+    Rgb colour;  // <C_h, D_h> in the representation asked for, unshadowed
     double mean = 0, sigma = 0;  // of the heights seen lit (the naive method: the resolved mean, sigma 0)
     double lambda_sum = 0;       // Lambda_o + Lambda_i (or their correlated form) (eq. 3)
     double visibility = 1;       // eq. 13

@@ -5,6 +5,7 @@
 #include "cmfilter/displaced_plane_sample.h"
 #include "cmfilter/gaussian_albedo.h"
 #include "cmfilter/height_filtered_albedo.h"
+#include "cmfilter/microsurface_albedo.h"
 #include "cmfilter/microsurface_footprint.h"
 #include "cmfilter/noise_lattice.h"
 #include "cmfilter/parallel_for.h"
@@ -19,6 +20,7 @@
 #include <mutex>
 #include <numeric>
 #include <optional>
+#include <variant>
 
 namespace cmfilter {
 
@@ -105,7 +107,8 @@ TextureColour texture_colour(RenderMethod method)
 {
     switch (method) {
     case RenderMethod::Naive: return TextureColour::Naive;
-    case RenderMethod::Gaussian: return TextureColour::Gaussian;
+    case RenderMethod::Gaussian:
+    case RenderMethod::GaussianExact: return TextureColour::Gaussian;
     case RenderMethod::Exact: return TextureColour::Exact;
     default: return TextureColour::None;
     }
@@ -161,18 +164,31 @@ HeightDirections height_directions(const Surface& surface, const SurfaceHit& h, 
     return d;
 }
 
+// How the one-ray methods represent a microsurface's slope filtering
+// distribution (microsurface_albedo.h).
+SlopeRepresentation slope_representation(RenderMethod method)
+{
+    switch (method) {
+    case RenderMethod::Naive: return SlopeRepresentation::Naive;
+    case RenderMethod::Exact: return SlopeRepresentation::Exact;
+    default: return SlopeRepresentation::Gaussian;
+    }
+}
+
 // A microsurface over a hit's footprint: the parallelogram of the ray
 // differentials cut along its longer edge into up to max_probes pieces
-// (anisotropic_probes.h), each filtered exactly
-// (microsurface_footprint.h); the albedos and AOVs averaged.
+// (anisotropic_probes.h), each filtered exactly (microsurface_footprint.h)
+// and its layers coloured (microsurface_albedo.h); V and the layers averaged
+// and combined with the base layer's colour, if any (`base`).
 struct MicrosurfaceFiltered {
     Rgb albedo;
     double mean = 0, sigma = 0, lod = 0;
 };
 
 MicrosurfaceFiltered filter_microsurface_hit(const SurfaceMaterial& m, const SurfaceHit& h,
-                                             const HeightDirections& directions, HeightRepresentation representation,
-                                             int max_probes, MaskingShadowing masking, const HeightMomentTable& table,
+                                             const HeightDirections& directions,
+                                             const MicrosurfaceLayerOptions& layer_options, int max_probes,
+                                             const HeightMomentTable& table, const std::optional<Rgb>& base,
                                              AlbedoCounts& counts)
 {
     const FootprintProbes probes =
@@ -180,19 +196,76 @@ MicrosurfaceFiltered filter_microsurface_hit(const SurfaceMaterial& m, const Sur
     const int count = probes.count;
     const double au = probes.step_u, av = probes.step_v, bu = probes.minor_u, bv = probes.minor_v;
     MicrosurfaceFiltered out;
+    double visibility = 0;
+    Rgb shadowed;
     for (int j = 0; j < count; ++j) {
         const double o = (j + 0.5) / count - 0.5;
-        const MicrosurfaceFootprint f = filter_microsurface(*m.microsurface, h.u + o * au, h.v + o * av, au / count,
-                                                            av / count, bu, bv);
-        const HeightAlbedo a = height_filtered_albedo(m, f, directions, representation, table, counts, masking);
-        out.albedo += a.albedo;
+        const double u = h.u + o * au, v = h.v + o * av;
+        const MicrosurfaceFootprint f = filter_microsurface(*m.microsurface, u, v, au / count, av / count, bu, bv);
+        const ResolvedSlope slope =
+            m.slope_map ? resolved_slope(*m.microsurface, u, v, au / count, av / count, bu, bv) : ResolvedSlope{};
+        const MicrosurfaceLayers a = microsurface_layers(m, f, slope, directions, layer_options, table, counts);
+        visibility += a.visibility;
+        shadowed += a.shadowed;
         out.mean += a.mean;
         out.sigma += a.sigma;
     }
-    out.albedo = (1.0 / count) * out.albedo;
+    out.albedo = combine_microsurface_albedo(m.combine, visibility / count, (1.0 / count) * shadowed, base);
     out.mean /= count;
     out.sigma /= count;
     out.lod = std::log2(std::max({std::hypot(au, av) / count, std::hypot(bu, bv), 1e-300}));
+    return out;
+}
+
+// A driver's colour over a hit's footprint (sec. 4): the albedo for a
+// one-ray method (`colour`; supersampled pixels take only the AOVs) and the
+// driver's filtered mean, sigma and LOD.
+struct DriverAlbedo {
+    Rgb albedo;
+    double mean = 0, sigma = 0, lod = 0;
+};
+
+DriverAlbedo filter_driver_albedo(const SurfaceMaterial& m, const SurfaceHit& h, RenderMethod method, bool colour,
+                                  const RenderOptions& options, const std::vector<Rgb>& bin_colors,
+                                  std::vector<float>& weights, AlbedoCounts& counts)
+{
+    DriverAlbedo out;
+    if (m.texture) {
+        // A texture: its pyramids looked up by probes along the footprint's
+        // major edge (texture_footprint.h).
+        const TextureFootprint f = filter_texture_footprint(m, h, colour ? texture_colour(method) : TextureColour::None,
+                                                            options.footprint, options.max_probes, bin_colors, weights);
+        counts.footprints += f.counts.footprints;
+        counts.plain += f.counts.plain;
+        return {f.albedo, f.mean, f.sigma, f.lod};
+    }
+    if (options.max_probes > 1) {
+        // A noise over an anisotropic footprint: probes along its major edge
+        // (anisotropic_probes.h), colours averaged.
+        const FootprintProbes probes =
+            footprint_probes(h.du_dx, h.dv_dx, h.du_dy, h.dv_dy, options.max_probes, options.footprint);
+        for (int j = 0; j < probes.count; ++j) {
+            const double o = (j + 0.5) / probes.count - 0.5;
+            const FilteredNoise::Parameters f =
+                m.noise->filter(h.u + o * probes.step_u, h.v + o * probes.step_v, probes.width);
+            if (colour)
+                out.albedo += method == RenderMethod::Naive ? m.map.evaluate(f.mean)
+                                                            : gaussian_albedo(m, f.mean, f.sigma, counts);
+            out.mean += f.mean;
+            out.sigma += f.sigma;
+        }
+        out.albedo = (1.0 / probes.count) * out.albedo;
+        out.mean /= probes.count;
+        out.sigma /= probes.count;
+        out.lod = m.noise->lod(probes.width);
+        return out;
+    }
+    const FilteredDriver f = filter_driver(m, h, options.footprint);
+    out.mean = f.mean;
+    out.sigma = f.sigma;
+    out.lod = f.lod;
+    if (colour)
+        out.albedo = method == RenderMethod::Naive ? m.map.evaluate(f.mean) : gaussian_albedo(m, f.mean, f.sigma, counts);
     return out;
 }
 
@@ -201,9 +274,10 @@ MicrosurfaceFiltered filter_microsurface_hit(const SurfaceMaterial& m, const Sur
 Status check_level0(const std::vector<SurfaceMaterial>& materials, RenderMethod method)
 {
     if (method != RenderMethod::Supersample && method != RenderMethod::Reference) return ok();
-    for (const SurfaceMaterial& m : materials)
-        if (m.texture && !m.texture->has_level0())
-            return io_error(m.missing_driver + "; " + to_string(method) +
+    for (const SurfaceMaterial& material : materials)
+        for (const SurfaceMaterial* m : {&material, material.base.get()})
+            if (m && m->texture && !m->texture->has_level0())
+                return io_error(m->missing_driver + "; " + to_string(method) +
                             " reads the driver's texels at each ray's hit (naive and gaussian need only the "
                             "moments): re-bake the moments from the driver where it is now, or name the driver "
                             "itself with driver/image");
@@ -279,6 +353,7 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
             if (materials[i].microsurface) {
                 HeightfieldOptions ho;
                 ho.threads = options.threads;
+                ho.slopes = materials[i].slope_map.has_value();  // the slope map reads them at each hit
                 auto field = Heightfield::create(*materials[i].microsurface, ho);
                 if (!field)
                     return Error{field.error().kind,
@@ -294,6 +369,11 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
     // Geometric coverage of pixels on edges, for the one-ray methods.
     std::optional<PixelCoverage> coverage;
     if (!supersampled && options.edge_coverage) coverage.emplace(scene, *camera);
+
+    MicrosurfaceLayerOptions layer_options;
+    layer_options.heights = height_representation(options.method);
+    layer_options.slopes = slope_representation(options.method);
+    layer_options.masking = options.masking;
 
     std::atomic<int> rows_done{0};
     std::atomic<std::size_t> footprints{0}, plain_footprints{0};
@@ -313,60 +393,32 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
             const SurfaceHit& h = hit.hit;
             const SurfaceMaterial& m = materials[static_cast<std::size_t>(hit.surface)];
             if (m.microsurface) {
-                // Height-correlated colour (sec. 5.1), masked and shadowed.
+                // Height- and slope-correlated colour and a base layer (secs.
+                // 5-6), masked and shadowed.
                 const HeightDirections directions = height_directions(
                     scene.surfaces[static_cast<std::size_t>(hit.surface)], h, normalize(scene.camera.position - h.point),
                     scene.light.direction);
-                const MicrosurfaceFiltered f = filter_microsurface_hit(
-                    m, h, directions, height_representation(options.method), options.max_probes, options.masking,
-                    *height_table, counts);
+                std::optional<Rgb> base;
+                if (m.base && !supersampled)
+                    base = filter_driver_albedo(*m.base, h,
+                                                options.method == RenderMethod::Naive ? RenderMethod::Naive
+                                                                                      : RenderMethod::Gaussian,
+                                                true, options, {}, weights, counts)
+                               .albedo;
+                const MicrosurfaceFiltered f = filter_microsurface_hit(m, h, directions, layer_options,
+                                                                       options.max_probes, *height_table, base, counts);
                 out.mean = f.mean;
                 out.sigma = f.sigma;
                 out.lod = f.lod;
                 if (!supersampled) out.colour = shade(f.albedo, h.normal, scene.light);
-            } else if (m.texture) {
-                // A texture: its pyramids looked up by probes along the
-                // footprint's major edge (texture_footprint.h).
-                const TextureFootprint f =
-                    filter_texture_footprint(m, h, texture_colour(options.method), options.footprint,
-                                             options.max_probes, bin_colors[static_cast<std::size_t>(hit.surface)],
-                                             weights);
-                out.mean = f.mean;
-                out.sigma = f.sigma;
-                out.lod = f.lod;
-                counts.footprints += f.counts.footprints;
-                counts.plain += f.counts.plain;
-                if (!supersampled) out.colour = shade(f.albedo, h.normal, scene.light);
-            } else if (m.noise && options.max_probes > 1) {
-                // A noise over an anisotropic footprint: probes along its
-                // major edge (anisotropic_probes.h), colours averaged.
-                const FootprintProbes probes = footprint_probes(h.du_dx, h.dv_dx, h.du_dy, h.dv_dy,
-                                                                options.max_probes, options.footprint);
-                Rgb albedo;
-                double mean = 0, sigma = 0;
-                for (int j = 0; j < probes.count; ++j) {
-                    const double o = (j + 0.5) / probes.count - 0.5;
-                    const FilteredNoise::Parameters f =
-                        m.noise->filter(h.u + o * probes.step_u, h.v + o * probes.step_v, probes.width);
-                    if (!supersampled)  // supersampled pixels take only the AOVs from here
-                        albedo += options.method == RenderMethod::Naive ? m.map.evaluate(f.mean)
-                                                                        : gaussian_albedo(m, f.mean, f.sigma, counts);
-                    mean += f.mean;
-                    sigma += f.sigma;
-                }
-                out.mean = mean / probes.count;
-                out.sigma = sigma / probes.count;
-                out.lod = m.noise->lod(probes.width);
-                if (!supersampled) out.colour = shade((1.0 / probes.count) * albedo, h.normal, scene.light);
             } else {
-                const FilteredDriver f = filter_driver(m, h, options.footprint);
+                const DriverAlbedo f = filter_driver_albedo(m, h, options.method, !supersampled, options,
+                                                            bin_colors[static_cast<std::size_t>(hit.surface)], weights,
+                                                            counts);
                 out.mean = f.mean;
                 out.sigma = f.sigma;
                 out.lod = f.lod;
-                if (options.method == RenderMethod::Naive)
-                    out.colour = shade(m.map.evaluate(f.mean), h.normal, scene.light);
-                else if (options.method == RenderMethod::Gaussian || options.method == RenderMethod::GaussianExact)
-                    out.colour = shade(gaussian_albedo(m, f.mean, f.sigma, counts), h.normal, scene.light);
+                if (!supersampled) out.colour = shade(f.albedo, h.normal, scene.light);
             }
             return out;
         };
@@ -424,7 +476,15 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
                             shaded_sum += scene.background;
                             continue;
                         }
-                        const Rgb c = m.map.evaluate(traced->height);
+                        // The material's colour at the hit (microsurface_albedo.h).
+                        std::optional<Rgb> base, height, slope;
+                        if (m.base) base = m.base->map.evaluate(driver_value(*m.base, traced->x, traced->y));
+                        if (m.height_map) height = m.map.evaluate(traced->height);
+                        if (m.slope_map)
+                            slope = std::visit(
+                                [&](const auto& map) { return map.evaluate(traced->slope_x, traced->slope_y); },
+                                *m.slope_map);
+                        const Rgb c = combine_point_colour(m.combine, base, height, slope);
                         MicrosurfaceSamples& acc = micro_samples[surface];
                         const double lit = traced->lit ? traced->light_cosine : 0.0;
                         acc.lit_colour += lit * c;

@@ -80,20 +80,57 @@ struct DriverSource {
 };
 
 // A material colours its surface by a driver (colormap = C0 of the driver's
-// values) or by the heights of a Gaussian microsurface (sec. 5.1; colormap =
-// C_h over heights, masked towards the viewer and shadowed towards the
-// light). A microsurface lives on a plane whose planar mapping is a scaled
-// isometry (u_axis and v_axis perpendicular, of equal length k, in the
-// plane): its wavelengths and heights are in texture units, and it displaces
-// the plane along its normal by h / k scene units.
+// values) or by a Gaussian microsurface (sec. 5): its heights (colormap =
+// C_h over heights, sec. 5.1), its slopes (slope_colormap = C_s, sec. 5.2),
+// a base layer (base = C0 of a driver, uncorrelated with the microsurface),
+// or a combination of these (sec. 6), all masked towards the viewer and
+// shadowed towards the light. A microsurface lives on a plane whose planar
+// mapping is a scaled isometry (u_axis and v_axis perpendicular, of equal
+// length k, in the plane): its wavelengths and heights are in texture units,
+// and it displaces the plane along its normal by h / k scene units. The
+// driver of a base layer reads the same texture coordinates.
 inline constexpr int kMaxMicrosurfaceCosines = 4096;
 // A scene microsurface's default period, in longest wavelengths.
 inline constexpr double kMicrosurfaceTileWavelengths = 8;
 
+// A slope colour map (slope_color_map.h): a gradient image over the slope
+// angle in degrees (steepness), or an image over the slope plane
+// [-max_slope, max_slope]^2 (vector).
+enum class SlopeMapKind { Steepness, Vector };
+struct SlopeColorMapSource {
+    SlopeMapKind kind = SlopeMapKind::Steepness;
+    std::string image_path;
+    double domain_min = 0, domain_max = 90;  // steepness: degrees
+    WrapMode wrap = WrapMode::Clamp;         // steepness
+    double max_slope = 1;                    // vector: > 0
+    std::string colorspace;                  // empty: decided from the file
+};
+
+// A base layer: C0 over a driver, as a plain material has.
+struct BaseLayerSource {
+    ColorMapSource colormap;
+    DriverSource driver;
+};
+
+// How a microsurface material's colours combine (sec. 6): a weighted sum
+// k0 C0 + k1 C_h + k2 C_s, or the product C0 C_h C_s, of the layers present.
+enum class CombineMode { Sum, Product };
+struct ColourCombination {
+    CombineMode mode = CombineMode::Sum;
+    double base = 1, height = 1, slope = 1;  // k0, k1, k2 (Sum)
+};
+
 struct Material {
+    // C0 over the driver, or with a microsurface C_h over its heights; absent
+    // (no table_path, no image_path) on a microsurface without a height map.
     ColorMapSource colormap;
     DriverSource driver;  // unused with a microsurface
     std::optional<GaussianMicrosurfaceOptions> microsurface;
+    std::optional<SlopeColorMapSource> slope_colormap;  // microsurface only
+    std::optional<BaseLayerSource> base;                // microsurface only
+    ColourCombination combine;                          // microsurface only
+
+    bool has_colormap() const { return !colormap.table_path.empty() || !colormap.image_path.empty(); }
 };
 
 enum class SurfaceKind { Plane, Sphere };

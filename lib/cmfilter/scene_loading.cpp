@@ -305,19 +305,129 @@ Expected<GaussianMicrosurfaceOptions> read_microsurface(const JsonValue& value)
     return o;
 }
 
+// A slope colour map (scene.h): a gradient over degrees, or an image over
+// the slope plane.
+Expected<SlopeColorMapSource> read_slope_colormap(const JsonValue& value, const fs::path& scene_folder)
+{
+    auto object = JsonObject::read(value, {"image", "by", "domain", "wrap", "max_slope", "colorspace"});
+    if (!object) return object.error();
+    SlopeColorMapSource map;
+    Status status = object->read_required("by", map.kind, [](const JsonValue& v) {
+        return read_choice<SlopeMapKind>(v, {{"steepness", SlopeMapKind::Steepness}, {"vector", SlopeMapKind::Vector}});
+    });
+    if (status)
+        status = object->read_required("image", map.image_path,
+                                       [&](const JsonValue& v) { return read_file_path(v, scene_folder); });
+    if (status) status = object->read_optional("colorspace", map.colorspace, read_colorspace);
+    if (status && map.kind == SlopeMapKind::Steepness) {
+        std::pair<double, double> domain{map.domain_min, map.domain_max};
+        status = object->reject_any_of({"max_slope"}, "applies only to a slope-vector map (\"by\": \"vector\")");
+        if (status) status = object->read_optional("domain", domain, read_domain);
+        if (status) status = object->read_optional("wrap", map.wrap, read_wrap);
+        std::tie(map.domain_min, map.domain_max) = domain;
+    } else if (status) {
+        status = object->reject_any_of({"domain", "wrap"},
+                                       "applies only to a steepness map (\"by\": \"steepness\"); a slope-vector "
+                                       "map lies over [-max_slope, max_slope]^2 and clamps beyond");
+        if (status) status = object->read_required("max_slope", map.max_slope, read_positive);
+    }
+    if (!status) return status.error();
+    return map;
+}
+
+// A base layer: C0 over a driver (its colour map takes no tolerance: the
+// default table serves it).
+Expected<BaseLayerSource> read_base_layer(const JsonValue& value, const fs::path& scene_folder)
+{
+    auto object = JsonObject::read(value, {"colormap", "driver"});
+    if (!object) return object.error();
+    BaseLayerSource base;
+    Status status = object->read_required(
+        "colormap", base.colormap, [&](const JsonValue& v) { return read_colormap(v, scene_folder); });
+    if (status && base.colormap.tolerance)
+        return value.member("colormap").member_error("tolerance", "a base layer's colour map takes the default "
+                                                                  "table (tolerance applies to the height map)");
+    if (status)
+        status = object->read_required("driver", base.driver,
+                                       [&](const JsonValue& v) { return read_driver(v, scene_folder); });
+    if (!status) return status.error();
+    return base;
+}
+
+// The combination of a microsurface material's layers; `present` says which
+// of base, height and slope the material has.
+Expected<ColourCombination> read_combination(const JsonValue& value, const bool (&present)[3])
+{
+    auto object = JsonObject::read(value, {"mode", "weights"});
+    if (!object) return object.error();
+    ColourCombination c;
+    Status status = object->read_required("mode", c.mode, [](const JsonValue& v) {
+        return read_choice<CombineMode>(v, {{"sum", CombineMode::Sum}, {"product", CombineMode::Product}});
+    });
+    if (status && c.mode == CombineMode::Product)
+        status = object->reject_any_of({"weights"}, "applies only to a sum (a product has no weights)");
+    if (status && c.mode == CombineMode::Sum) {
+        auto weights_value = object->require("weights");
+        if (!weights_value) return weights_value.error();
+        auto weights = JsonObject::read(*weights_value, {"base", "height", "slope"});
+        if (!weights) return weights.error();
+        const char* names[3] = {"base", "height", "slope"};
+        double* targets[3] = {&c.base, &c.height, &c.slope};
+        const char* layers[3] = {"base", "colormap", "slope_colormap"};
+        for (int k = 0; k < 3 && status; ++k) {
+            if (present[k]) status = weights->read_required(names[k], *targets[k], read_non_negative);
+            else if (weights->has(names[k]))
+                status = weights_value->member_error(names[k], std::string("the material has no ") + layers[k] +
+                                                                   " to weigh");
+        }
+    }
+    if (!status) return status.error();
+    return c;
+}
+
 Expected<Material> read_material(const JsonValue& value, const fs::path& scene_folder)
 {
-    auto object = JsonObject::read(value, {"colormap", "driver", "microsurface"});
+    auto object =
+        JsonObject::read(value, {"colormap", "driver", "microsurface", "slope_colormap", "base", "combine"});
     if (!object) return object.error();
     Material material;
-    Status status = object->read_required(
-        "colormap", material.colormap, [&](const JsonValue& v) { return read_colormap(v, scene_folder); });
-    if (status) status = object->require_one_of({"driver", "microsurface"});
-    if (status && object->has("driver"))
-        status = object->read_required("driver", material.driver,
-                                       [&](const JsonValue& v) { return read_driver(v, scene_folder); });
-    if (status && object->has("microsurface")) status = object->read_required("microsurface", material.microsurface, read_microsurface);
+    Status status = object->require_one_of({"driver", "microsurface"});
+    if (status && object->has("driver")) {
+        status = object->reject_any_of({"slope_colormap", "base", "combine"},
+                                       "needs a microsurface (a driven material has its colormap alone)");
+        if (status)
+            status = object->read_required(
+                "colormap", material.colormap, [&](const JsonValue& v) { return read_colormap(v, scene_folder); });
+        if (status)
+            status = object->read_required("driver", material.driver,
+                                           [&](const JsonValue& v) { return read_driver(v, scene_folder); });
+        if (!status) return status.error();
+        return material;
+    }
+    if (status) status = object->read_required("microsurface", material.microsurface, read_microsurface);
+    if (status)
+        status = object->read_optional(
+            "colormap", material.colormap, [&](const JsonValue& v) { return read_colormap(v, scene_folder); });
+    if (status)
+        status = object->read_optional("slope_colormap", material.slope_colormap,
+                                       [&](const JsonValue& v) { return read_slope_colormap(v, scene_folder); });
+    if (status)
+        status = object->read_optional("base", material.base,
+                                       [&](const JsonValue& v) { return read_base_layer(v, scene_folder); });
     if (!status) return status.error();
+    const bool present[3] = {material.base.has_value(), material.has_colormap(), material.slope_colormap.has_value()};
+    const int layers = present[0] + present[1] + present[2];
+    if (layers == 0)
+        return value.error("a microsurface material needs at least one of colormap (over heights), slope_colormap "
+                           "and base");
+    if (layers > 1 && !object->has("combine"))
+        return value.member_error("combine", "required with more than one of colormap, slope_colormap and base: "
+                                             "{\"mode\": \"sum\", \"weights\": {...}} or {\"mode\": \"product\"}");
+    if (object->has("combine")) {
+        auto combine = read_combination(value.member("combine"), present);
+        if (!combine) return combine.error();
+        material.combine = *combine;
+    }
     return material;
 }
 

@@ -7,6 +7,7 @@
 #include "cmfilter/noise_sigma_bake.h"
 #include "cmfilter/noise_sigma_table_file.h"
 #include "cmfilter/noise_spec.h"
+#include "cmfilter/slope_color_map_loading.h"
 #include "cmfilter/table_color_map.h"
 #include "cmfilter/tolerance_tables.h"
 
@@ -24,13 +25,43 @@ std::string where(const Scene& scene, std::size_t surface, const std::string& ke
     return scene.path + ": /surfaces/" + std::to_string(surface) + "/material/" + key + ": ";
 }
 
+// A colour map and a driver to load: a plain material's, or a microsurface
+// material's base layer (keys under /material/base/).
+struct LayerSource {
+    const Scene& scene;
+    std::size_t i;
+    const ColorMapSource& colormap;
+    const DriverSource& driver;
+    std::string root;  // "" or "base/"
+    std::string where(const std::string& key) const { return cmfilter::where(scene, i, root + key); }
+};
+
+LayerSource material_layer(const Scene& scene, std::size_t i)
+{
+    const Material& material = scene.surfaces[i].material;
+    return {scene, i, material.colormap, material.driver, ""};
+}
+
 Error located(const Error& e, const std::string& prefix) { return {e.kind, prefix + e.message}; }
 
-Status load_colormap(const Scene& scene, std::size_t i, const ColorConfig& config, const MaterialOptions& options,
+// A gradient image laid over [vmin, vmax].
+ColorMapLoadOptions gradient_load_options(const std::string& path, double vmin, double vmax, WrapMode wrap,
+                                          const std::string& colorspace)
+{
+    ColorMapLoadOptions load;
+    load.path = path;
+    load.vmin = vmin;
+    load.vmax = vmax;
+    load.wrap = wrap;
+    load.colorspace = colorspace;
+    return load;
+}
+
+Status load_colormap(const LayerSource& layer, const ColorConfig& config, const MaterialOptions& options,
                      SurfaceMaterial& m)
 {
-    const ColorMapSource& source = scene.surfaces[i].material.colormap;
-    const std::string prefix = where(scene, i, "colormap");
+    const ColorMapSource& source = layer.colormap;
+    const std::string prefix = layer.where("colormap");
     if (!source.table_path.empty()) {
         auto loaded = read_gaussian_color_table(source.table_path);
         if (!loaded) return located(loaded.error(), prefix);
@@ -44,13 +75,9 @@ Status load_colormap(const Scene& scene, std::size_t i, const ColorConfig& confi
         m.table_path = source.table_path;
         return ok();
     }
-    ColorMapLoadOptions load;
-    load.path = source.image_path;
-    load.vmin = source.domain_min;
-    load.vmax = source.domain_max;
-    load.wrap = source.wrap;
-    load.colorspace = source.colorspace;
-    auto map = load_color_map(load, config);
+    auto map = load_color_map(gradient_load_options(source.image_path, source.domain_min, source.domain_max,
+                                                    source.wrap, source.colorspace),
+                              config);
     if (!map) return located(map.error(), prefix);
     m.map = std::move(map->map);
     m.map_path = source.image_path;
@@ -67,20 +94,21 @@ Status load_colormap(const Scene& scene, std::size_t i, const ColorConfig& confi
 // A clamp map whose domain misses the driver's values [lo, hi] (`what` says
 // how they were measured) shows one end colour everywhere: surely the wrong
 // domain.
-Status check_domain(const Scene& scene, std::size_t i, const SurfaceMaterial& m, double lo, double hi,
+Status check_domain(const LayerSource& layer, const SurfaceMaterial& m, double lo, double hi,
                     const std::string& what)
 {
     if (m.map.wrap != WrapMode::Clamp || !(hi < m.map.vmin || lo > m.map.vmax)) return ok();
     std::ostringstream s;
-    s << where(scene, i, "colormap") << "the colour map's domain [" << m.map.vmin << ", " << m.map.vmax
+    s << layer.where("colormap") << "the colour map's domain [" << m.map.vmin << ", " << m.map.vmax
       << "] does not meet the driver's values (" << what << ": [" << lo << ", " << hi << "])";
     return bad_input(s.str());
 }
 
-Status load_noise_driver(const Scene& scene, std::size_t i, const MaterialOptions& options, SurfaceMaterial& m)
+Status load_noise_driver(const LayerSource& layer, const MaterialOptions& options, SurfaceMaterial& m)
 {
-    const DriverSource& driver = scene.surfaces[i].material.driver;
-    const std::string prefix = where(scene, i, "driver");
+    const DriverSource& driver = layer.driver;
+    const std::size_t i = layer.i;
+    const std::string prefix = layer.where("driver");
     auto spec = parse_noise_spec(driver.noise_spec);
     if (!spec) return located(spec.error(), prefix + "noise: ");
     auto noise = make_noise(*spec);
@@ -111,7 +139,7 @@ Status load_noise_driver(const Scene& scene, std::size_t i, const MaterialOption
 
     if (m.map.wrap == WrapMode::Clamp) {
         const NoiseGlobalStats stats = measure_global_stats(*noise, 1 << 16, 7, options.threads);
-        if (auto st = check_domain(scene, i, m, stats.mean - 3 * stats.sigma, stats.mean + 3 * stats.sigma,
+        if (auto st = check_domain(layer, m, stats.mean - 3 * stats.sigma, stats.mean + 3 * stats.sigma,
                                    "mean +- 3 sigma");
             !st)
             return st;
@@ -122,14 +150,14 @@ Status load_noise_driver(const Scene& scene, std::size_t i, const MaterialOption
 
 // A moment pyramid (bake-moments output) and the driver it was baked from,
 // read back from its cmfilter:source and checked as apply checks it.
-Status load_moments_driver(const Scene& scene, std::size_t i, const MaterialOptions& options, SurfaceMaterial& m)
+Status load_moments_driver(const LayerSource& layer, const MaterialOptions& options, SurfaceMaterial& m)
 {
-    const std::string& path = scene.surfaces[i].material.driver.moments_path;
-    const std::string prefix = where(scene, i, "driver/moments");
+    const std::string& path = layer.driver.moments_path;
+    const std::string prefix = layer.where("driver/moments");
     auto moments = MomentTexture::open(path);
     if (!moments) return located(moments.error(), prefix);
     const MomentPyramidInfo& info = moments->info();
-    if (auto st = check_domain(scene, i, m, info.driver_min, info.driver_max, "min and max"); !st) return st;
+    if (auto st = check_domain(layer, m, info.driver_min, info.driver_max, "min and max"); !st) return st;
     std::error_code ec;
     if (!std::filesystem::is_regular_file(info.source, ec)) {
         // The pyramid alone serves naive and gaussian; what needs level 0
@@ -155,17 +183,18 @@ Status load_moments_driver(const Scene& scene, std::size_t i, const MaterialOpti
 
 // A driver image: read once, its moment pyramid baked in process into a
 // temporary file (TextureSystem reads files) that the texture keeps.
-Status load_image_driver(const Scene& scene, std::size_t i, const MaterialOptions& options, SurfaceMaterial& m)
+Status load_image_driver(const LayerSource& layer, const MaterialOptions& options, SurfaceMaterial& m)
 {
-    const std::string& path = scene.surfaces[i].material.driver.image_path;
-    const std::string prefix = where(scene, i, "driver/image");
+    const std::string& path = layer.driver.image_path;
+    const std::size_t i = layer.i;
+    const std::string prefix = layer.where("driver/image");
     MomentBakeOptions bake;
     bake.driver_path = path;
     bake.wrap = TextureWrap::Periodic;  // texture coordinates repeat (scene.h)
     bake.threads = options.threads;
     auto driver = read_driver_and_hash(bake.driver_read());
     if (!driver) return located(driver.error(), prefix);
-    if (auto st = check_domain(scene, i, m, driver->image.min, driver->image.max, "min and max"); !st) return st;
+    if (auto st = check_domain(layer, m, driver->image.min, driver->image.max, "min and max"); !st) return st;
     if (options.note)
         options.note("baking the moment pyramid of " + path + " (surface " + std::to_string(i) +
                      "; bake it once with bake-moments --wrap periodic and name it with driver/moments to skip "
@@ -218,28 +247,72 @@ Status load_histograms(const Scene& scene, std::size_t i, const MaterialOptions&
     return ok();
 }
 
-Status load_driver(const Scene& scene, std::size_t i, const MaterialOptions& options, SurfaceMaterial& m)
+Status load_driver(const LayerSource& layer, const MaterialOptions& options, SurfaceMaterial& m)
 {
-    switch (scene.surfaces[i].material.driver.kind) {
-    case DriverKind::Noise: return load_noise_driver(scene, i, options, m);
-    case DriverKind::Moments: return load_moments_driver(scene, i, options, m);
-    case DriverKind::Image: return load_image_driver(scene, i, options, m);
+    switch (layer.driver.kind) {
+    case DriverKind::Noise: return load_noise_driver(layer, options, m);
+    case DriverKind::Moments: return load_moments_driver(layer, options, m);
+    case DriverKind::Image: return load_image_driver(layer, options, m);
     }
-    return runtime_error(where(scene, i, "driver") + "unknown driver kind");
+    return runtime_error(layer.where("driver") + "unknown driver kind");
 }
 
-// A microsurface whose heights drive the map (sec. 5.1), and a clamp map's
-// domain checked against its heights' +- 3 sigma_h.
+// A microsurface (sec. 5), and a clamp height map's domain checked against
+// its heights' +- 3 sigma_h.
 Status load_microsurface(const Scene& scene, std::size_t i, SurfaceMaterial& m)
 {
     const Surface& surface = scene.surfaces[i];
     auto micro = GaussianMicrosurface::create(*surface.material.microsurface);
     if (!micro) return located(micro.error(), where(scene, i, "microsurface"));
     const double sigma = micro->sigma_h();
-    if (auto st = check_domain(scene, i, m, -3 * sigma, 3 * sigma, "the microsurface's heights, +- 3 sigma_h"); !st)
-        return st;
+    if (m.height_map)
+        if (auto st = check_domain(material_layer(scene, i), m, -3 * sigma, 3 * sigma,
+                                   "the microsurface's heights, +- 3 sigma_h");
+            !st)
+            return st;
     m.microsurface.emplace(std::move(*micro));
     m.height_scale = 1.0 / length(surface.mapping.u_axis);
+    return ok();
+}
+
+// A slope colour map (sec. 5.2): a steepness gradient over degrees, or a
+// slope-vector image.
+Status load_slope_map(const Scene& scene, std::size_t i, const ColorConfig& config, SurfaceMaterial& m)
+{
+    const SlopeColorMapSource& source = *scene.surfaces[i].material.slope_colormap;
+    const std::string prefix = where(scene, i, "slope_colormap");
+    if (source.kind == SlopeMapKind::Steepness) {
+        auto map = load_color_map(gradient_load_options(source.image_path, source.domain_min, source.domain_max,
+                                                        source.wrap, source.colorspace),
+                                  config);
+        if (!map) return located(map.error(), prefix);
+        m.slope_map = SteepnessColorMap{std::move(map->map)};
+    } else {
+        SlopeVectorColorMapLoadOptions load;
+        load.path = source.image_path;
+        load.colorspace = source.colorspace;
+        load.s_max = source.max_slope;
+        auto map = load_slope_vector_color_map(load, config);
+        if (!map) return located(map.error(), prefix);
+        m.slope_map = std::move(map->map);
+    }
+    m.slope_map_path = source.image_path;
+    return ok();
+}
+
+// A base layer: C0 and its driver, loaded as a plain material's (its table
+// the default one).
+Status load_base_layer(const Scene& scene, std::size_t i, const ColorConfig& config, const MaterialOptions& options,
+                       SurfaceMaterial& m)
+{
+    const BaseLayerSource& source = *scene.surfaces[i].material.base;
+    const LayerSource layer{scene, i, source.colormap, source.driver, "base/"};
+    MaterialOptions base_options = options;
+    base_options.tables.tolerance = 0;  // the default table
+    auto base = std::make_shared<SurfaceMaterial>();
+    if (auto st = load_colormap(layer, config, base_options, *base); !st) return st;
+    if (auto st = load_driver(layer, base_options, *base); !st) return st;
+    m.base = std::move(base);
     return ok();
 }
 
@@ -259,15 +332,25 @@ Expected<std::vector<SurfaceMaterial>> prepare_materials(const Scene& scene, con
 {
     std::vector<SurfaceMaterial> materials(scene.surfaces.size());
     for (std::size_t i = 0; i < scene.surfaces.size(); ++i) {
-        if (auto st = load_colormap(scene, i, config, options, materials[i]); !st) return st.error();
+        const Material& material = scene.surfaces[i].material;
+        SurfaceMaterial& m = materials[i];
+        m.height_map = material.microsurface && material.has_colormap();
+        if (material.has_colormap())
+            if (auto st = load_colormap(material_layer(scene, i), config, options, m); !st) return st.error();
         if (options.histograms)
             if (auto st = refuse_noise_for_exact(scene, i); !st) return st.error();
-        if (scene.surfaces[i].material.microsurface) {
-            if (auto st = load_microsurface(scene, i, materials[i]); !st) return st.error();
+        if (material.microsurface) {
+            if (auto st = load_microsurface(scene, i, m); !st) return st.error();
+            if (material.slope_colormap)
+                if (auto st = load_slope_map(scene, i, config, m); !st) return st.error();
+            if (material.base)
+                if (auto st = load_base_layer(scene, i, config, options, m); !st) return st.error();
+            m.combine = material.combine;
+            if (!m.height_map) continue;  // no table of its own
         } else {
-            if (auto st = load_driver(scene, i, options, materials[i]); !st) return st.error();
+            if (auto st = load_driver(material_layer(scene, i), options, m); !st) return st.error();
             if (options.histograms)
-                if (auto st = load_histograms(scene, i, options, materials[i]); !st) return st.error();
+                if (auto st = load_histograms(scene, i, options, m); !st) return st.error();
         }
         TableChoiceOptions tables = options.tables;
         tables.threads = options.threads;

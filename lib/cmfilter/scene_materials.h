@@ -33,18 +33,25 @@
 #include "cmfilter/histogram_pyramid.h"
 #include "cmfilter/plain_lookup.h"
 #include "cmfilter/scene.h"
+#include "cmfilter/slope_color_map.h"
 #include "cmfilter/table_fit.h"
 
 #include <functional>
 #include <memory>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace cmfilter {
 
+// A microsurface material's slope colour map C_s (sec. 5.2).
+using SlopeMap = std::variant<SteepnessColorMap, SlopeVectorColorMap>;
+
 struct SurfaceMaterial {
-    ColorMap map;                       // C0, scene-linear
+    // C0 over the driver, scene-linear; with a microsurface C_h over its
+    // heights (height_map), or unused (no height map).
+    ColorMap map;
     GaussianColorTable table;           // T(mean, sigma)
     // The small-sigma shortcut (plain_lookup.h): the gaussian method takes
     // C0(mean) itself where sigma < plain.below(mean); empty: never.
@@ -57,6 +64,14 @@ struct SurfaceMaterial {
     // per texture unit (1 / the mapping's axis length).
     std::optional<GaussianMicrosurface> microsurface;
     double height_scale = 1;
+    // A microsurface material's layers (scene.h): whether map is C_h, the
+    // slope map C_s, the base layer (C0 and its driver: a plain material of
+    // its own, default table), and how they combine (sec. 6).
+    bool height_map = false;
+    std::optional<SlopeMap> slope_map;
+    std::shared_ptr<const SurfaceMaterial> base;
+    ColourCombination combine;
+    std::string slope_map_path;
     std::string map_path, table_path;   // provenance (empty table_path: baked here)
     std::string driver_path;            // texture: the level-0 driver image read (or recorded, when gone)
     // A moments driver whose recorded driver is gone (no level 0): the error

@@ -1,0 +1,93 @@
+#include "cmfilter/microsurface_albedo.h"
+
+#include "cmfilter/slope_colour.h"
+
+#include <variant>
+
+namespace cmfilter {
+
+namespace {
+
+// <C_s, D_s> (eq. 20) for the slopes N(resolved mean, unresolved covariance)
+// seen from the view.
+Rgb slope_layer(const SlopeMap& map, const MicrosurfaceFootprint& f, const ResolvedSlope& slope,
+                const HeightDirections& d, const MicrosurfaceLayerOptions& options)
+{
+    return std::visit(
+        [&](const auto& m) -> Rgb {
+            if (options.slopes == SlopeRepresentation::Naive) return m.evaluate(slope.x, slope.y);
+            const SlopeGaussian slopes{slope.x, slope.y, f.slope_xx, f.slope_xy, f.slope_yy};
+            const ViewAngles view{d.theta_o, d.phi_o};
+            if (options.slopes == SlopeRepresentation::Exact) {
+                ExactSlopeColourOptions o;
+                o.panels = options.exact_panels;
+                return exact_slope_colour(m, slopes, view, o);
+            }
+            GaussianSlopeColourOptions o;
+            o.points_per_axis = options.hermite_points;
+            return gaussian_slope_colour(m, slopes, view, o);
+        },
+        map);
+}
+
+Rgb times(const Rgb& a, const Rgb& b) { return {a.r * b.r, a.g * b.g, a.b * b.b}; }
+
+}  // namespace
+
+MicrosurfaceLayers microsurface_layers(const SurfaceMaterial& m, const MicrosurfaceFootprint& f,
+                                       const ResolvedSlope& slope, const HeightDirections& d,
+                                       const MicrosurfaceLayerOptions& options, const HeightMomentTable& table,
+                                       AlbedoCounts& counts)
+{
+    MicrosurfaceLayers out;
+    out.mean = f.mean_height;
+    std::optional<Rgb> height, slope_colour;
+    if (m.height_map) {
+        const HeightAlbedo h = height_filtered_albedo(m, f, d, options.heights, table, counts, options.masking);
+        height = h.colour;
+        out.visibility = options.heights == HeightRepresentation::Naive ? 1.0 : h.visibility * h.resolved_visibility;
+        out.mean = h.mean;
+        out.sigma = h.sigma;
+    } else if (options.heights != HeightRepresentation::Naive) {
+        out.visibility = microsurface_visibility(f, d, options.masking).total();
+    }
+    if (m.slope_map) slope_colour = slope_layer(*m.slope_map, f, slope, d, options);
+    const ColourCombination& c = m.combine;
+    Rgb layers;
+    if (c.mode == CombineMode::Sum) {
+        if (height) layers += c.height * *height;
+        if (slope_colour) layers += c.slope * *slope_colour;
+    } else {
+        layers = {1, 1, 1};
+        if (height) layers = times(layers, *height);
+        if (slope_colour) layers = times(layers, *slope_colour);
+    }
+    out.shadowed = out.visibility * layers;
+    return out;
+}
+
+Rgb combine_microsurface_albedo(const ColourCombination& c, double mean_visibility, const Rgb& mean_shadowed,
+                                const std::optional<Rgb>& base)
+{
+    if (!base) return mean_shadowed;
+    if (c.mode == CombineMode::Sum) return (c.base * mean_visibility) * *base + mean_shadowed;
+    return times(*base, mean_shadowed);
+}
+
+Rgb combine_point_colour(const ColourCombination& c, const std::optional<Rgb>& base, const std::optional<Rgb>& height,
+                         const std::optional<Rgb>& slope)
+{
+    if (c.mode == CombineMode::Sum) {
+        Rgb out;
+        if (base) out += c.base * *base;
+        if (height) out += c.height * *height;
+        if (slope) out += c.slope * *slope;
+        return out;
+    }
+    Rgb out{1, 1, 1};
+    for (const auto* layer : {&base, &height, &slope})
+        if (*layer) out = times(out, **layer);
+    return out;
+}
+
+}  // namespace cmfilter
