@@ -487,3 +487,30 @@ TEST_CASE("displacement refuses missing files, non-square, multi-channel and non
     REQUIRE(odd);
     CHECK(odd->heightfield(1).error().kind == ErrorKind::BadInput);
 }
+
+TEST_CASE("the bundled snake-scales displacement loads, tiles, and spans slopes of 0 to about 60 degrees")
+{
+    DisplacementOptions o;
+    o.path = std::string(CMFILTER_SOURCE_DIR) + "/examples/scenes/snake-scales.exr";
+    auto t = DisplacementTexture::load(o);
+    REQUIRE(t);
+    const int n = t->size();
+    CHECK(n == 256);
+    double flattest = 90, steepest = 0, step_inside = 0, step_across = 0;
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const auto [sx, sy] = t->texel_slope(i, j);
+            const double angle = std::atan(std::hypot(sx, sy)) * 180 / kPi;
+            flattest = std::min(flattest, angle);
+            steepest = std::max(steepest, angle);
+            // Height steps between neighbours: across the wrap no larger than inside.
+            const double step = std::max(std::abs(t->texel_height(i + 1, j) - t->texel_height(i, j)),
+                                         std::abs(t->texel_height(i, j + 1) - t->texel_height(i, j)));
+            double& worst = i == n - 1 || j == n - 1 ? step_across : step_inside;
+            worst = std::max(worst, step);
+        }
+    CHECK(flattest < 2);
+    CHECK(steepest > 55);
+    CHECK(steepest < 65);
+    CHECK(step_across <= step_inside);
+}
