@@ -298,9 +298,10 @@ TEST_CASE("displacement footprint moments against brute force from sub-texel to 
         double aspect;  // |e2| / |e1|
         double angle;   // of e1
         double mean_tol, cov_tol;
+        double rel_tol = 0;  // under a texel: of the footprint's own spread
     };
     const Case cases[] = {
-        {0.05, 1, 0.3, 1e-3, 1e-3},  {0.3, 0.5, 1.0, 2e-3, 1e-3}, {1.0, 1, 0.2, 0.05, 0.015},
+        {0.05, 1, 0.3, 1e-3, 1e-3, 0.02},  {0.3, 0.5, 1.0, 2e-3, 1e-3, 0.02}, {1.0, 1, 0.2, 0.05, 0.015},
         {3.0, 1, 0.7, 0.06, 0.1},    {8.0, 0.125, 0.4, 0.03, 0.05}, {10.0, 1, 2.1, 0.1, 0.12},
         {32.0, 1, 0.1, 0.06, 0.04},  {100.0, 0.7, 0.9, 0.08, 0.02}, {400.0, 0.05, 1.3, 0.02, 0.006},
     };
@@ -325,6 +326,14 @@ TEST_CASE("displacement footprint moments against brute force from sub-texel to 
             CHECK(std::abs(fp.slope_xy - b.xy) <= c.cov_tol * slope_var);
             CHECK(std::abs(fp.slope_yy - b.yy) <= c.cov_tol * slope_var);
             CHECK(std::abs(fp.sigma_h * fp.sigma_h - b.hh) <= c.cov_tol * height_var);
+            if (c.texels < 1) {
+                // Under a texel the spread itself, not only its share of the
+                // whole (the 16 x 16 midpoint grid's own variance is 1/256 low).
+                CHECK(fp.slope_xx == doctest::Approx(b.xx).epsilon(c.rel_tol));
+                CHECK(fp.slope_yy == doctest::Approx(b.yy).epsilon(c.rel_tol));
+                CHECK(std::abs(fp.slope_xy - b.xy) <= c.rel_tol * std::sqrt(b.xx * b.yy));
+                CHECK(fp.sigma_h * fp.sigma_h == doctest::Approx(b.hh).epsilon(c.rel_tol));
+            }
         }
     }
 }
