@@ -90,10 +90,11 @@ public:
     // The bilinear surface at (x, y), anywhere on the plane.
     double height(double x, double y) const;
     // The microsurface's slopes (dh/dx, dh/dy) at (x, y): its exact slopes at
-    // the nodes (HeightfieldOptions::slopes), bilinear between them: smooth
-    // slopes with the microsurface's statistics, for slope-coloured maps (the
-    // bilinear patches' own gradients jump at texel edges and are a little
-    // flatter). False, leaving sx and sy alone, when they were not tabulated.
+    // the nodes (HeightfieldOptions::slopes; from_nodes: those given),
+    // bilinear between them: smooth slopes with the microsurface's
+    // statistics, for slope-coloured maps (the bilinear patches' own
+    // gradients jump at texel edges and are a little flatter). False, leaving
+    // sx and sy alone, when they were not tabulated.
     bool slope(double x, double y, double& sx, double& sy) const;
 
     // The first crossing of the ray origin + t direction, 0 < t <= t_max.
