@@ -192,12 +192,67 @@ Expected<Heightfield> Heightfield::create(const GaussianMicrosurface& surface, c
         h.slope_x_ = std::move(sx.value());
         h.slope_y_ = std::move(sy.value());
     }
-    const auto [lo, hi] = std::minmax_element(h.nodes_.begin(), h.nodes_.end());
-    h.min_height_ = *lo;
-    h.max_height_ = *hi;
-    h.mipmap_ = MaxMipmap(h.nodes_.data(), h.n_);
-    h.top_level_ = std::max(0, h.mipmap_.top_level() - 1);  // the top level, the whole tile, never skips
+    h.finish();
     return h;
+}
+
+Expected<Heightfield> Heightfield::from_nodes(std::vector<double> heights, int n, double tile,
+                                              std::vector<double> slope_x, std::vector<double> slope_y)
+{
+    constexpr int kLargestResolution = 16384;
+    if (n < 1 || n > kLargestResolution || (n & (n - 1)) != 0)
+        return bad_input("heightfield node grid " + std::to_string(n) + " x " + std::to_string(n) +
+                         " is not a power of two from 1 to " + std::to_string(kLargestResolution));
+    if (!(tile > 0) || !std::isfinite(tile))
+        return bad_input("heightfield tile " + std::to_string(tile) + " is out of range (expected finite and > 0)");
+    const std::size_t count = static_cast<std::size_t>(n) * n;
+    if (heights.size() != count)
+        return bad_input("heightfield has " + std::to_string(heights.size()) + " node heights for a " +
+                         std::to_string(n) + " x " + std::to_string(n) + " grid (expected " + std::to_string(count) +
+                         ")");
+    if (slope_x.size() != slope_y.size() || (!slope_x.empty() && slope_x.size() != count))
+        return bad_input("heightfield node slopes: " + std::to_string(slope_x.size()) + " along x and " +
+                         std::to_string(slope_y.size()) + " along y (expected none, or " + std::to_string(count) +
+                         " of each)");
+    // The grid closed into (n + 1) x (n + 1), the last row and column repeating the first.
+    const auto close = [n](const std::vector<double>& grid, const char* what) -> Expected<std::vector<double>> {
+        const std::size_t stride = static_cast<std::size_t>(n) + 1;
+        std::vector<double> closed(stride * stride);
+        for (std::size_t j = 0; j < stride; ++j)
+            for (std::size_t i = 0; i < stride; ++i) {
+                const double value = grid[(j % n) * n + i % n];
+                if (!std::isfinite(value))
+                    return bad_input(std::string("heightfield node ") + what + " at (" + std::to_string(i % n) +
+                                     ", " + std::to_string(j % n) + ") is not finite (expected finite values)");
+                closed[j * stride + i] = value;
+            }
+        return closed;
+    };
+    Heightfield h;
+    h.n_ = n;
+    h.tile_ = tile;
+    auto nodes = close(heights, "height");
+    if (!nodes) return nodes.error();
+    h.nodes_ = std::move(nodes.value());
+    if (!slope_x.empty()) {
+        auto sx = close(slope_x, "slope x");
+        if (!sx) return sx.error();
+        auto sy = close(slope_y, "slope y");
+        if (!sy) return sy.error();
+        h.slope_x_ = std::move(sx.value());
+        h.slope_y_ = std::move(sy.value());
+    }
+    h.finish();
+    return h;
+}
+
+void Heightfield::finish()
+{
+    const auto [lo, hi] = std::minmax_element(nodes_.begin(), nodes_.end());
+    min_height_ = *lo;
+    max_height_ = *hi;
+    mipmap_ = MaxMipmap(nodes_.data(), n_);
+    top_level_ = std::max(0, mipmap_.top_level() - 1);  // the top level, the whole tile, never skips
 }
 
 double Heightfield::node_height(std::int64_t i, std::int64_t j) const

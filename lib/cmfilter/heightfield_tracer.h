@@ -1,6 +1,8 @@
 // A ray-traced heightfield: one tile of a periodic GaussianMicrosurface
 // (gaussian_microsurface.h, tile > 0) tabulated at the nodes of an N x N grid
-// and repeated over the whole plane, the ground truth for what a viewer sees
+// (or any periodic grid of nodes given as they are, from_nodes: the texels of
+// a displacement texture, displacement_texture.h) and repeated over the whole
+// plane, the ground truth for what a viewer sees
 // and a light reaches on the microsurface, independent of Smith's model.
 //
 // Frame: x, y in the microsurface's units, z the height. Node (i, j) lies at
@@ -68,6 +70,16 @@ public:
     // of range, or a resolution N over max_resolution.
     static Expected<Heightfield> create(const GaussianMicrosurface& surface, const HeightfieldOptions& options);
 
+    // Any periodic n x n grid of nodes, one tile of side `tile`: heights[j * n
+    // + i] is node (i, j), at (i, j) * tile / n as above, and slope_x, slope_y
+    // (both empty, or n * n each, laid out the same) its slopes (dh/dx,
+    // dh/dy) for slope(). Tracing, heights and slopes as for create. BadInput
+    // naming the value and what was expected: n not a power of two from 1 to
+    // 16384, a tile not finite and > 0, sizes that differ from n * n, or a
+    // non-finite node.
+    static Expected<Heightfield> from_nodes(std::vector<double> heights, int n, double tile,
+                                            std::vector<double> slope_x = {}, std::vector<double> slope_y = {});
+
     int resolution() const { return n_; }  // N, nodes per side of a tile
     double tile() const { return tile_; }
     double texel_size() const { return tile_ / n_; }
@@ -78,10 +90,11 @@ public:
     // The bilinear surface at (x, y), anywhere on the plane.
     double height(double x, double y) const;
     // The microsurface's slopes (dh/dx, dh/dy) at (x, y): its exact slopes at
-    // the nodes (HeightfieldOptions::slopes), bilinear between them: smooth
-    // slopes with the microsurface's statistics, for slope-coloured maps (the
-    // bilinear patches' own gradients jump at texel edges and are a little
-    // flatter). False, leaving sx and sy alone, when they were not tabulated.
+    // the nodes (HeightfieldOptions::slopes; from_nodes: those given),
+    // bilinear between them: smooth slopes with the microsurface's
+    // statistics, for slope-coloured maps (the bilinear patches' own
+    // gradients jump at texel edges and are a little flatter). False, leaving
+    // sx and sy alone, when they were not tabulated.
     bool slope(double x, double y, double& sx, double& sy) const;
 
     // The first crossing of the ray origin + t direction, 0 < t <= t_max.
@@ -108,6 +121,8 @@ private:
     std::optional<Crossing> walk(const Ray& ray, double t_end, int side, bool at_origin) const;
     Ray local_ray(const Vec3& start, const Vec3& direction) const;
     double on_surface_tolerance(const Vec3& p) const;
+    // The height range and maximum mipmap of nodes_, once they are set.
+    void finish();
 
     int n_ = 0;
     int top_level_ = 0;  // the coarsest mipmap level the walk starts from
