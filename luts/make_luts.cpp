@@ -155,6 +155,41 @@ EncodedColor narrow_band(int i)
     return std::fabs((i + 0.5) - band_centre) <= band_half_width ? bright_yellow : dark_grey;
 }
 
+// ---------------------------------------------------------------------------
+// snake-green.png: a snake's base skin over a noise: dark olive (40, 60, 20)
+// at t = 0, green (90, 140, 40) at 0.5, yellow-green (170, 190, 70) at 1,
+// blended as terrain.png's (texel i at t = i / 255).
+// ---------------------------------------------------------------------------
+EncodedColor snake_green(int i)
+{
+    static const std::array<Key, 3> keys = {{
+        {0.0, {40, 60, 20}},
+        {0.5, {90, 140, 40}},
+        {1.0, {170, 190, 70}},
+    }};
+    return keyed(keys, i);
+}
+
+// ---------------------------------------------------------------------------
+// snake-rims.png: a steepness map for scales, laid over [0, 90] degrees
+// (texel i at angle 90 i / 255): cream scale tops, red flanks, black rims.
+//   0 and 15 degrees  cream (235, 220, 170)
+//   30 and 40 degrees red   (190, 40, 25)
+//   55 and 90 degrees black (20, 10, 10)
+// ---------------------------------------------------------------------------
+EncodedColor snake_rims(int i)
+{
+    static const std::array<Key, 6> keys = {{
+        {0.0 / 90, {235, 220, 170}},
+        {15.0 / 90, {235, 220, 170}},
+        {30.0 / 90, {190, 40, 25}},
+        {40.0 / 90, {190, 40, 25}},
+        {55.0 / 90, {20, 10, 10}},
+        {90.0 / 90, {20, 10, 10}},
+    }};
+    return keyed(keys, i);
+}
+
 // A hue h in [0, 1) at saturation s and value 1, by the HSV formula of
 // hue-ramp.png: each channel 255 (1 - s (1 - unit channel)).
 EncodedColor hue_at(double h, double saturation)
@@ -316,6 +351,7 @@ int main(int argc, char** argv)
         gradient("step.png", step),               gradient("narrow-band.png", narrow_band),
         gradient("hue-ramp.png", hue_ramp),       gradient("sand-snow.png", sand_snow),
         gradient("grass-rock.png", grass_rock),   {"slope-wheel.png", slope_wheel, kWheelSide, kWheelSide},
+        gradient("snake-green.png", snake_green), gradient("snake-rims.png", snake_rims),
     };
     for (const ColorMapDefinition& map : maps) {
         const std::string error = write_png_atomically(output_directory / map.file_name, map.width, map.height, evaluate(map));

@@ -7,14 +7,14 @@ namespace cmfilter {
 
 std::optional<DisplacedPlaneSample> trace_displaced_plane(const Surface& plane, const Heightfield& heightfield,
                                                           const Vec3& origin, const Vec3& direction,
-                                                          const Vec3& to_light)
+                                                          const Vec3& to_light, double shift)
 {
     const TextureMapping& m = plane.mapping;
     const double k = length(m.u_axis);
     // Heights along the normal facing the ray's origin.
     const Vec3 n = dot(origin - plane.point, plane.normal) >= 0 ? plane.normal : -1.0 * plane.normal;
     const auto local_point = [&](const Vec3& p) {
-        return Vec3{dot(p - m.origin, m.u_axis), dot(p - m.origin, m.v_axis), k * dot(p - plane.point, n)};
+        return Vec3{dot(p - m.origin, m.u_axis) - shift, dot(p - m.origin, m.v_axis) - shift, k * dot(p - plane.point, n)};
     };
     // Directions scale by k on every axis: the local ray's t is k times the scene's.
     const auto local_direction = [&](const Vec3& d) { return Vec3{dot(d, m.u_axis), dot(d, m.v_axis), k * dot(d, n)}; };
@@ -25,9 +25,9 @@ std::optional<DisplacedPlaneSample> trace_displaced_plane(const Surface& plane, 
     DisplacedPlaneSample s;
     s.t = hit->t;  // d has length k, so local t is the scene distance
     s.height = hit->height;
-    s.x = hit->point.x;
-    s.y = hit->point.y;
-    if (!heightfield.slope(s.x, s.y, s.slope_x, s.slope_y)) {
+    s.x = hit->point.x + shift;
+    s.y = hit->point.y + shift;
+    if (!heightfield.slope(hit->point.x, hit->point.y, s.slope_x, s.slope_y)) {
         s.slope_x = -hit->normal.x / hit->normal.z;
         s.slope_y = -hit->normal.y / hit->normal.z;
     }

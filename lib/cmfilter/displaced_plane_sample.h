@@ -28,8 +28,11 @@ struct DisplacedPlaneSample {
 // The ray (unit direction) against the displaced plane seen from the side
 // the ray comes from; none when it never meets the heightfield (a ray parallel
 // to the plane or leaving it).
+// `shift`: the heightfield's (x, y) are the texture's (u - shift, v - shift)
+// (a displacement texture's half texel, DisplacementTexture::heightfield_xy;
+// 0 for a Gaussian microsurface).
 std::optional<DisplacedPlaneSample> trace_displaced_plane(const Surface& plane, const Heightfield& heightfield,
                                                           const Vec3& origin, const Vec3& direction,
-                                                          const Vec3& to_light);
+                                                          const Vec3& to_light, double shift = 0);
 
 }  // namespace cmfilter

@@ -167,6 +167,10 @@ Expected<DriverSigmaRange> largest_surface_sigma(const Scene& scene, std::size_t
         return bad_input(scene.path + ": surface " + std::to_string(surface) + " does not exist (the scene has " +
                          std::to_string(scene.surfaces.size()) + ")");
     const DriverSource& driver = scene.surfaces[surface].material.driver;
+    if (scene.surfaces[surface].material.displacement)
+        return bad_input(scene.path + ": /surfaces/" + std::to_string(surface) +
+                         "/material/colormap: a displacement's height map takes the default table (no tolerance: "
+                         "its heights are not Gaussian, so no sigma range is derived for them)");
     if (const auto& micro = scene.surfaces[surface].material.microsurface) {
         // D_h's sigma never exceeds the microsurface's sigma_h (eq. 18).
         if (!(micro->sigma_h > 0))

@@ -201,9 +201,22 @@ MicrosurfaceFiltered filter_microsurface_hit(const SurfaceMaterial& m, const Sur
     for (int j = 0; j < count; ++j) {
         const double o = (j + 0.5) / count - 0.5;
         const double u = h.u + o * au, v = h.v + o * av;
-        const MicrosurfaceFootprint f = filter_microsurface(*m.microsurface, u, v, au / count, av / count, bu, bv);
-        const ResolvedSlope slope =
-            m.slope_map ? resolved_slope(*m.microsurface, u, v, au / count, av / count, bu, bv) : ResolvedSlope{};
+        MicrosurfaceFootprint f;
+        ResolvedSlope slope;
+        if (m.microsurface) {
+            f = filter_microsurface(*m.microsurface, u, v, au / count, av / count, bu, bv);
+            if (m.slope_map) slope = resolved_slope(*m.microsurface, u, v, au / count, av / count, bu, bv);
+        } else {
+            // A displacement texture's moments over the piece: nothing it
+            // resolves is taken as shadowing geometry (V_r = 1).
+            const DisplacementFootprint d = m.displacement->footprint(u, v, au / count, av / count, bu, bv);
+            f.mean_height = d.mean_height;
+            f.sigma_h = d.sigma_h;
+            f.slope_xx = d.slope_xx;
+            f.slope_xy = d.slope_xy;
+            f.slope_yy = d.slope_yy;
+            slope = {d.slope_x, d.slope_y};
+        }
         const MicrosurfaceLayers a = microsurface_layers(m, f, slope, directions, layer_options, table, counts);
         visibility += a.visibility;
         shadowed += a.shadowed;
@@ -296,7 +309,7 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
         return bad_input("--spp " + std::to_string(options.samples) + " is out of range (expected 1 to " +
                          std::to_string(kMaxSamples) + ")");
     for (const SurfaceMaterial& m : materials)
-        if (!m.noise && !m.texture && !m.microsurface)
+        if (!m.noise && !m.texture && !m.layered())
             return bad_input("render: every surface needs a driver (a noise or a texture) or a microsurface");
     if (auto st = check_level0(materials, options.method); !st) return st.error();
     // The exact method: C0 at each material's distinct driver values.
@@ -304,7 +317,7 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
     if (options.method == RenderMethod::Exact)
         for (std::size_t i = 0; i < materials.size(); ++i) {
             const SurfaceMaterial& m = materials[i];
-            if (m.microsurface) continue;  // <C_h, D_h> exactly (height_colour.h)
+            if (m.layered()) continue;  // <C_h, D_h> exactly (height_colour.h)
             if (!m.texture)
                 return bad_input("render: surface " + std::to_string(i) + ": exact needs a texture driver with at most " +
                                  std::to_string(kHistogramMaxValues) +
@@ -320,7 +333,7 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
     // only for a scene with a microsurface.
     std::optional<HeightMomentTable> height_table;
     if (std::any_of(materials.begin(), materials.end(),
-                    [](const SurfaceMaterial& m) { return m.microsurface.has_value(); })) {
+                    [](const SurfaceMaterial& m) { return m.layered(); })) {
         auto table = HeightMomentTable::create();  // 512 exact moments: about 15 ms
         if (!table) return table.error();
         height_table.emplace(std::move(*table));
@@ -348,19 +361,26 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
     // The ray-traced methods trace each microsurface's tabulated heightfield
     // (heightfield_tracer.h) and shade it fully as well.
     std::vector<std::optional<Heightfield>> heightfields(materials.size());
+    std::vector<double> heightfield_shift(materials.size(), 0.0);  // trace_displaced_plane's shift
     if (supersampled)
         for (std::size_t i = 0; i < materials.size(); ++i)
-            if (materials[i].microsurface) {
+            if (materials[i].layered()) {
                 HeightfieldOptions ho;
                 ho.threads = options.threads;
                 ho.slopes = materials[i].slope_map.has_value();  // the slope map reads them at each hit
-                auto field = Heightfield::create(*materials[i].microsurface, ho);
+                auto field = materials[i].microsurface ? Heightfield::create(*materials[i].microsurface, ho)
+                                                       : materials[i].displacement->heightfield(options.threads);
+                if (materials[i].displacement) heightfield_shift[i] = 0.5 / materials[i].displacement->size();
                 if (!field)
                     return Error{field.error().kind,
-                                 scene.path + ": /surfaces/" + std::to_string(i) + "/material/microsurface: " +
-                                     to_string(options.method) +
-                                     " traces one tile tabulated at 8 texels per shortest wavelength, at most 4096 "
-                                     "per side (a shorter tile or a longer min_wavelength fits): " +
+                                 scene.path + ": /surfaces/" + std::to_string(i) +
+                                     (materials[i].microsurface
+                                          ? "/material/microsurface: " + std::string(to_string(options.method)) +
+                                                " traces one tile tabulated at 8 texels per shortest wavelength, at "
+                                                "most 4096 per side (a shorter tile or a longer min_wavelength fits): "
+                                          : "/material/displacement: " + std::string(to_string(options.method)) +
+                                                " traces the texels as a heightfield, which needs a power-of-two "
+                                                "size: ") +
                                      field.error().message};
                 heightfields[i].emplace(std::move(*field));
                 image.shaded.assign(3 * pixels, 0.0f);
@@ -392,7 +412,7 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
             FilteredHit out;
             const SurfaceHit& h = hit.hit;
             const SurfaceMaterial& m = materials[static_cast<std::size_t>(hit.surface)];
-            if (m.microsurface) {
+            if (m.layered()) {
                 // Height- and slope-correlated colour and a base layer (secs.
                 // 5-6), masked and shadowed.
                 const HeightDirections directions = height_directions(
@@ -467,10 +487,11 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
                     const SurfaceHit& h = sample_hit->hit;
                     const auto surface = static_cast<std::size_t>(sample_hit->surface);
                     const SurfaceMaterial& m = materials[surface];
-                    if (m.microsurface) {
+                    if (m.layered()) {
                         // The displaced plane, ray traced (displaced_plane_sample.h).
-                        const auto traced = trace_displaced_plane(scene.surfaces[surface], *heightfields[surface],
-                                                                  ray.origin, ray.direction, scene.light.direction);
+                        const auto traced =
+                            trace_displaced_plane(scene.surfaces[surface], *heightfields[surface], ray.origin,
+                                                  ray.direction, scene.light.direction, heightfield_shift[surface]);
                         if (!traced) {
                             sum += scene.background;
                             shaded_sum += scene.background;

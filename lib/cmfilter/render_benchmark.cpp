@@ -230,7 +230,7 @@ Expected<SceneBench> bench_scene(const Scene& scene, std::vector<SurfaceMaterial
             if (auto st = prepare_histograms(scene, materials, mo); !st) return st.error();
         }
         if (c.method == RenderMethod::GaussianExact &&
-            std::none_of(materials.begin(), materials.end(), [](const SurfaceMaterial& m) { return m.microsurface.has_value(); })) {
+            std::none_of(materials.begin(), materials.end(), [](const SurfaceMaterial& m) { return m.layered(); })) {
             if (options.note) options.note(scene.path + ": gaussian-exact: left out (no microsurface: it would be gaussian)");
             continue;
         }

@@ -120,17 +120,30 @@ struct ColourCombination {
     double base = 1, height = 1, slope = 1;  // k0, k1, k2 (Sum)
 };
 
+// A textured displacement (displacement_texture.h): a square one-channel
+// image, one repeat a texture unit, heights texel * height_scale in texture
+// units, in place of a Gaussian microsurface (the paper's snake, fig. 10).
+struct DisplacementSource {
+    std::string image_path;
+    std::string channel;  // a name or 0-based index; empty: the image's only channel
+    double height_scale = 1;
+};
+
 struct Material {
     // C0 over the driver, or with a microsurface C_h over its heights; absent
     // (no table_path, no image_path) on a microsurface without a height map.
     ColorMapSource colormap;
     DriverSource driver;  // unused with a microsurface
+    // The microsurface: a Gaussian one or a textured displacement (at most
+    // one); the keys below are a microsurface material's.
     std::optional<GaussianMicrosurfaceOptions> microsurface;
+    std::optional<DisplacementSource> displacement;
     std::optional<SlopeColorMapSource> slope_colormap;  // microsurface only
     std::optional<BaseLayerSource> base;                // microsurface only
     ColourCombination combine;                          // microsurface only
 
     bool has_colormap() const { return !colormap.table_path.empty() || !colormap.image_path.empty(); }
+    bool has_microsurface() const { return microsurface || displacement; }
 };
 
 enum class SurfaceKind { Plane, Sphere };

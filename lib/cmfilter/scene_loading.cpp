@@ -385,13 +385,33 @@ Expected<ColourCombination> read_combination(const JsonValue& value, const bool 
     return c;
 }
 
+// A textured displacement (scene.h).
+Expected<DisplacementSource> read_displacement(const JsonValue& value, const fs::path& scene_folder)
+{
+    auto object = JsonObject::read(value, {"image", "channel", "height_scale"});
+    if (!object) return object.error();
+    DisplacementSource d;
+    Status status = object->read_required("image", d.image_path,
+                                          [&](const JsonValue& v) { return read_file_path(v, scene_folder); });
+    if (status)
+        status = object->read_optional("channel", d.channel, [](const JsonValue& v) -> Expected<std::string> {
+            if (v.json().is_number_unsigned()) return std::to_string(v.json().get<std::uint64_t>());
+            auto name = read_string(v);
+            if (name && name->empty()) return v.expected("a channel name or a 0-based index");
+            return name;
+        });
+    if (status) status = object->read_optional("height_scale", d.height_scale, read_non_negative);
+    if (!status) return status.error();
+    return d;
+}
+
 Expected<Material> read_material(const JsonValue& value, const fs::path& scene_folder)
 {
-    auto object =
-        JsonObject::read(value, {"colormap", "driver", "microsurface", "slope_colormap", "base", "combine"});
+    auto object = JsonObject::read(
+        value, {"colormap", "driver", "microsurface", "displacement", "slope_colormap", "base", "combine"});
     if (!object) return object.error();
     Material material;
-    Status status = object->require_one_of({"driver", "microsurface"});
+    Status status = object->require_one_of({"driver", "microsurface", "displacement"});
     if (status && object->has("driver")) {
         status = object->reject_any_of({"slope_colormap", "base", "combine"},
                                        "needs a microsurface (a driven material has its colormap alone)");
@@ -404,7 +424,11 @@ Expected<Material> read_material(const JsonValue& value, const fs::path& scene_f
         if (!status) return status.error();
         return material;
     }
-    if (status) status = object->read_required("microsurface", material.microsurface, read_microsurface);
+    if (status && object->has("microsurface"))
+        status = object->read_required("microsurface", material.microsurface, read_microsurface);
+    if (status && object->has("displacement"))
+        status = object->read_required("displacement", material.displacement,
+                                       [&](const JsonValue& v) { return read_displacement(v, scene_folder); });
     if (status)
         status = object->read_optional(
             "colormap", material.colormap, [&](const JsonValue& v) { return read_colormap(v, scene_folder); });
@@ -418,8 +442,8 @@ Expected<Material> read_material(const JsonValue& value, const fs::path& scene_f
     const bool present[3] = {material.base.has_value(), material.has_colormap(), material.slope_colormap.has_value()};
     const int layers = present[0] + present[1] + present[2];
     if (layers == 0)
-        return value.error("a microsurface material needs at least one of colormap (over heights), slope_colormap "
-                           "and base");
+        return value.error("a microsurface or displacement material needs at least one of colormap (over "
+                           "heights), slope_colormap and base");
     if (layers > 1 && !object->has("combine"))
         return value.member_error("combine", "required with more than one of colormap, slope_colormap and base: "
                                              "{\"mode\": \"sum\", \"weights\": {...}} or {\"mode\": \"product\"}");
@@ -495,7 +519,8 @@ Status check_microsurface_plane(const JsonObject& surface_object, const Surface&
 {
     const JsonValue material = surface_object.value().member("material");
     if (surface.kind != SurfaceKind::Plane)
-        return material.member_error("microsurface", "a microsurface needs a plane (it displaces the plane along its "
+        return material.member_error(surface.material.microsurface ? "microsurface" : "displacement",
+                                     "a microsurface needs a plane (it displaces the plane along its "
                                                      "normal), not a sphere");
     const TextureMapping& m = surface.mapping;
     const double ku = length(m.u_axis), kv = length(m.v_axis);
@@ -539,7 +564,7 @@ Expected<Surface> read_surface(const JsonValue& value, const fs::path& scene_fol
     if (status)
         status = object->read_required("material", surface.material,
                                        [&](const JsonValue& v) { return read_material(v, scene_folder); });
-    if (status && surface.material.microsurface) status = check_microsurface_plane(*object, surface);
+    if (status && surface.material.has_microsurface()) status = check_microsurface_plane(*object, surface);
     if (!status) return status.error();
     return surface;
 }

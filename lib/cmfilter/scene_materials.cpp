@@ -11,6 +11,7 @@
 #include "cmfilter/table_color_map.h"
 #include "cmfilter/tolerance_tables.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <memory>
 #include <sstream>
@@ -275,6 +276,36 @@ Status load_microsurface(const Scene& scene, std::size_t i, SurfaceMaterial& m)
     return ok();
 }
 
+// A textured displacement, and a clamp height map's domain checked against
+// its heights.
+Status load_displacement(const Scene& scene, std::size_t i, const MaterialOptions& options, SurfaceMaterial& m)
+{
+    const Surface& surface = scene.surfaces[i];
+    const DisplacementSource& source = *surface.material.displacement;
+    DisplacementOptions o;
+    o.path = source.image_path;
+    o.channel = source.channel;
+    o.height_scale = source.height_scale;
+    o.threads = options.threads;
+    auto texture = DisplacementTexture::load(o);
+    if (!texture) return located(texture.error(), where(scene, i, "displacement"));
+    if (m.height_map) {
+        const int n = texture->size();
+        double lo = texture->texel_height(0, 0), hi = lo;
+        for (int j = 0; j < n; ++j)
+            for (int k = 0; k < n; ++k) {
+                lo = std::min(lo, texture->texel_height(k, j));
+                hi = std::max(hi, texture->texel_height(k, j));
+            }
+        if (auto st = check_domain(material_layer(scene, i), m, lo, hi, "the displacement's heights, min and max");
+            !st)
+            return st;
+    }
+    m.displacement.emplace(std::move(*texture));
+    m.height_scale = 1.0 / length(surface.mapping.u_axis);
+    return ok();
+}
+
 // A slope colour map (sec. 5.2): a steepness gradient over degrees, or a
 // slope-vector image.
 Status load_slope_map(const Scene& scene, std::size_t i, const ColorConfig& config, SurfaceMaterial& m)
@@ -318,7 +349,7 @@ Status load_base_layer(const Scene& scene, std::size_t i, const ColorConfig& con
 
 Status refuse_noise_for_exact(const Scene& scene, std::size_t i)
 {
-    if (scene.surfaces[i].material.microsurface || scene.surfaces[i].material.driver.kind != DriverKind::Noise)
+    if (scene.surfaces[i].material.has_microsurface() || scene.surfaces[i].material.driver.kind != DriverKind::Noise)
         return ok();
     return bad_input(where(scene, i, "driver") + "exact needs a texture driver with at most " +
                      std::to_string(kHistogramMaxValues) +
@@ -334,13 +365,15 @@ Expected<std::vector<SurfaceMaterial>> prepare_materials(const Scene& scene, con
     for (std::size_t i = 0; i < scene.surfaces.size(); ++i) {
         const Material& material = scene.surfaces[i].material;
         SurfaceMaterial& m = materials[i];
-        m.height_map = material.microsurface && material.has_colormap();
+        m.height_map = material.has_microsurface() && material.has_colormap();
         if (material.has_colormap())
             if (auto st = load_colormap(material_layer(scene, i), config, options, m); !st) return st.error();
         if (options.histograms)
             if (auto st = refuse_noise_for_exact(scene, i); !st) return st.error();
-        if (material.microsurface) {
-            if (auto st = load_microsurface(scene, i, m); !st) return st.error();
+        if (material.has_microsurface()) {
+            if (auto st = material.microsurface ? load_microsurface(scene, i, m) : load_displacement(scene, i, options, m);
+                !st)
+                return st.error();
             if (material.slope_colormap)
                 if (auto st = load_slope_map(scene, i, config, m); !st) return st.error();
             if (material.base)
@@ -362,7 +395,7 @@ Expected<std::vector<SurfaceMaterial>> prepare_materials(const Scene& scene, con
 bool exact_filterable(const std::vector<SurfaceMaterial>& materials)
 {
     for (const SurfaceMaterial& m : materials)
-        if (!m.microsurface &&  // a microsurface's <C_h, D_h> is exact without histograms (height_colour.h)
+        if (!m.layered() &&  // a microsurface's <C_h, D_h> is exact without histograms (height_colour.h)
             (!m.texture || !m.texture->has_level0() ||
              m.texture->distinct_values() > static_cast<std::size_t>(kHistogramMaxValues)))
             return false;
@@ -375,7 +408,7 @@ Status prepare_histograms(const Scene& scene, std::vector<SurfaceMaterial>& mate
         return bad_input("histograms: " + std::to_string(materials.size()) + " materials for " +
                          std::to_string(scene.surfaces.size()) + " surfaces");
     for (std::size_t i = 0; i < materials.size(); ++i) {
-        if (materials[i].histograms || materials[i].microsurface) continue;
+        if (materials[i].histograms || materials[i].layered()) continue;
         if (auto st = refuse_noise_for_exact(scene, i); !st) return st;
         if (auto st = load_histograms(scene, i, options, materials[i]); !st) return st;
     }

@@ -25,6 +25,7 @@
 
 #include "cmfilter/color_config.h"
 #include "cmfilter/color_map.h"
+#include "cmfilter/displacement_texture.h"
 #include "cmfilter/error.h"
 #include "cmfilter/filtered_noise.h"
 #include "cmfilter/filtered_texture.h"
@@ -63,6 +64,8 @@ struct SurfaceMaterial {
     // set. Heights and wavelengths in texture units; height_scale scene units
     // per texture unit (1 / the mapping's axis length).
     std::optional<GaussianMicrosurface> microsurface;
+    // or a textured displacement in its place (scene.h), with the same units.
+    std::optional<DisplacementTexture> displacement;
     double height_scale = 1;
     // A microsurface material's layers (scene.h): whether map is C_h, the
     // slope map C_s, the base layer (C0 and its driver: a plain material of
@@ -72,6 +75,9 @@ struct SurfaceMaterial {
     std::shared_ptr<const SurfaceMaterial> base;
     ColourCombination combine;
     std::string slope_map_path;
+
+    // A microsurface material (Gaussian or displaced): coloured by its layers.
+    bool layered() const { return microsurface || displacement; }
     std::string map_path, table_path;   // provenance (empty table_path: baked here)
     std::string driver_path;            // texture: the level-0 driver image read (or recorded, when gone)
     // A moments driver whose recorded driver is gone (no level 0): the error

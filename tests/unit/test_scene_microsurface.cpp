@@ -256,10 +256,10 @@ TEST_CASE("a material with both a driver and a microsurface, or neither, is an e
 {
     json scene = microsurface_scene();
     scene["surfaces"][0]["material"]["driver"] = {{"noise", "gradient"}};
-    CHECK(error_of(scene) == "/surfaces/0/material: expected exactly one of driver or microsurface, got driver and microsurface");
+    CHECK(error_of(scene) == "/surfaces/0/material: expected exactly one of driver, microsurface or displacement, got driver and microsurface");
     scene["surfaces"][0]["material"].erase("driver");
     scene["surfaces"][0]["material"].erase("microsurface");
-    CHECK(error_of(scene) == "/surfaces/0/material: expected exactly one of driver or microsurface, got none");
+    CHECK(error_of(scene) == "/surfaces/0/material: expected exactly one of driver, microsurface or displacement, got none");
 }
 
 TEST_CASE("a microsurface on a sphere is an error")
