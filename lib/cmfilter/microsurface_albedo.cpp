@@ -1,5 +1,6 @@
 #include "cmfilter/microsurface_albedo.h"
 
+#include "cmfilter/displacement_slope_colour.h"
 #include "cmfilter/slope_colour.h"
 
 #include <variant>
@@ -11,13 +12,17 @@ namespace {
 // <C_s, D_s> (eq. 20) for the slopes N(resolved mean, unresolved covariance)
 // seen from the view.
 Rgb slope_layer(const SlopeMap& map, const MicrosurfaceFootprint& f, const ResolvedSlope& slope,
-                const HeightDirections& d, const MicrosurfaceLayerOptions& options)
+                const HeightDirections& d, const MicrosurfaceLayerOptions& options,
+                const DisplacementTexture* displacement, const FootprintPiece* piece)
 {
     return std::visit(
         [&](const auto& m) -> Rgb {
             if (options.slopes == SlopeRepresentation::Naive) return m.evaluate(slope.x, slope.y);
             const SlopeGaussian slopes{slope.x, slope.y, f.slope_xx, f.slope_xy, f.slope_yy};
             const ViewAngles view{d.theta_o, d.phi_o};
+            if (options.slopes == SlopeRepresentation::Exact && displacement && piece)
+                return displacement_slope_colour(*displacement, m, piece->u, piece->v, piece->e1u, piece->e1v,
+                                                 piece->e2u, piece->e2v, view);
             if (options.slopes == SlopeRepresentation::Exact) {
                 ExactSlopeColourOptions o;
                 o.panels = options.exact_panels;
@@ -37,7 +42,7 @@ Rgb times(const Rgb& a, const Rgb& b) { return {a.r * b.r, a.g * b.g, a.b * b.b}
 MicrosurfaceLayers microsurface_layers(const SurfaceMaterial& m, const MicrosurfaceFootprint& f,
                                        const ResolvedSlope& slope, const HeightDirections& d,
                                        const MicrosurfaceLayerOptions& options, const HeightMomentTable& table,
-                                       AlbedoCounts& counts)
+                                       AlbedoCounts& counts, const FootprintPiece* piece)
 {
     MicrosurfaceLayers out;
     out.mean = f.mean_height;
@@ -51,7 +56,9 @@ MicrosurfaceLayers microsurface_layers(const SurfaceMaterial& m, const Microsurf
     } else if (options.heights != HeightRepresentation::Naive) {
         out.visibility = microsurface_visibility(f, d, options.masking).total();
     }
-    if (m.slope_map) slope_colour = slope_layer(*m.slope_map, f, slope, d, options);
+    if (m.slope_map)
+        slope_colour = slope_layer(*m.slope_map, f, slope, d, options,
+                                   m.displacement ? &*m.displacement : nullptr, piece);
     const ColourCombination& c = m.combine;
     Rgb layers;
     if (c.mode == CombineMode::Sum) {

@@ -3,7 +3,8 @@
 //   height  C_h, V <C_h, D_h> (eq. 14; height_filtered_albedo.h);
 //   slope   C_s, V <C_s, D_s> (eqs. 19-20; slope_colour.h): D_s for the
 //           unresolved slope covariance about the resolved mean slope, seen
-//           from the view direction;
+//           from the view direction (exact on a textured displacement: its
+//           own slopes, displacement_slope_colour.h);
 //   base    C0 over a driver that ignores the microsurface, V C0-bar, its
 //           driver filtered as a plain material's (sec. 4).
 // V is eq. 13's mean visibility times the resolved heights' shadowing V_r
@@ -58,12 +59,20 @@ struct MicrosurfaceLayers {
     double mean = 0, sigma = 0;
 };
 
+// The probe's parallelogram: centre (u, v), edges e1 and e2, texture units.
+struct FootprintPiece {
+    double u = 0, v = 0, e1u = 0, e1v = 0, e2u = 0, e2v = 0;
+};
+
 // `slope` is the resolved mean slope over the probe (needed with a slope
 // map; ignored otherwise). `table` serves HeightRepresentation::ExactMoments.
+// On a textured displacement, SlopeRepresentation::Exact takes D_s from the
+// texture's own slopes over `piece` (displacement_slope_colour.h; without a
+// piece, from the Gaussian of the footprint's moments as elsewhere).
 MicrosurfaceLayers microsurface_layers(const SurfaceMaterial& material, const MicrosurfaceFootprint& footprint,
                                        const ResolvedSlope& slope, const HeightDirections& directions,
                                        const MicrosurfaceLayerOptions& options, const HeightMomentTable& table,
-                                       AlbedoCounts& counts);
+                                       AlbedoCounts& counts, const FootprintPiece* piece = nullptr);
 
 // The footprint's albedo from the probes' mean V and mean shadowed layers
 // and the base layer's filtered colour (none without a base layer).

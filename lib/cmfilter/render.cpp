@@ -217,7 +217,8 @@ MicrosurfaceFiltered filter_microsurface_hit(const SurfaceMaterial& m, const Sur
             f.slope_yy = d.slope_yy;
             slope = {d.slope_x, d.slope_y};
         }
-        const MicrosurfaceLayers a = microsurface_layers(m, f, slope, directions, layer_options, table, counts);
+        const FootprintPiece piece{u, v, au / count, av / count, bu, bv};
+        const MicrosurfaceLayers a = microsurface_layers(m, f, slope, directions, layer_options, table, counts, &piece);
         visibility += a.visibility;
         shadowed += a.shadowed;
         out.mean += a.mean;
