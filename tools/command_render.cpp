@@ -32,6 +32,7 @@ struct RenderArgs {
     int probes = 16;
     bool no_edge_coverage = false;
     std::string masking = "uncorrelated";
+    std::string slope_shading = "uncorrelated";
     std::uint64_t seed = 0;
     std::string footprint = "rms";
     std::string aov;
@@ -116,6 +117,9 @@ Status run(const RenderArgs& args)
     }
     if (args.masking != "uncorrelated" && args.masking != "correlated")
         return bad_input("--masking '" + args.masking + "' is unknown (expected uncorrelated or correlated)");
+    if (args.slope_shading != "uncorrelated" && args.slope_shading != "correlated")
+        return bad_input("--slope-shading '" + args.slope_shading +
+                         "' is unknown (expected uncorrelated or correlated)");
     const std::string aov_paths[3] = {args.aov + ".mean.exr", args.aov + ".sigma.exr", args.aov + ".lod.exr"};
     const std::string shaded_path = args.aov + ".shaded.exr";
     if (!args.aov.empty()) {
@@ -149,6 +153,7 @@ Status run(const RenderArgs& args)
     options.max_probes = args.probes;
     options.edge_coverage = !args.no_edge_coverage;
     if (args.masking == "correlated") options.masking = MaskingShadowing::DirectionCorrelated;
+    if (args.slope_shading == "correlated") options.slope_shading = SlopeShading::Correlated;
     if (talk && isatty(STDERR_FILENO)) options.progress = terminal_progress("render");
     auto image = render(*scene, *materials, options);
     if (!image) return image.error();
@@ -190,6 +195,7 @@ Status run(const RenderArgs& args)
         j["seed"] = args.seed;
         j["footprint"] = to_string(options.footprint);
         j["masking"] = args.masking;
+        j["slope_shading"] = args.slope_shading;
         j["edge_coverage"] = options.edge_coverage && *method != RenderMethod::Supersample &&
                              *method != RenderMethod::Reference;
         j["size"] = {image->width, image->height};
@@ -238,6 +244,11 @@ Command setup_render(CLI::App& parent)
     app->add_option("--masking", args->masking,
                     "Microsurfaces: masking and shadowing independent (uncorrelated, the paper's eq. 13) or correlated "
                     "by the view's and the light's azimuths (correlated)")
+        ->capture_default_str();
+    app->add_option("--slope-shading", args->slope_shading,
+                    "Microsurfaces coloured by slope: the facets' shading independent of their colour "
+                    "(uncorrelated, the paper's eq. 19) or each slope weighted by its facet's cosine to the light "
+                    "(correlated)")
         ->capture_default_str();
     app->add_flag("--no-edge-coverage", args->no_edge_coverage,
                   "naive, gaussian, exact: take the centre ray's surface for the whole pixel, also on silhouettes "

@@ -1,5 +1,7 @@
 #include "cmfilter/displacement_slope_colour.h"
 
+#include "cmfilter/light_weighted_slope_map.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -37,6 +39,16 @@ template Rgb displacement_slope_colour(const DisplacementTexture&, const Steepne
                                        double, double, double, const ViewAngles&,
                                        const DisplacementSlopeColourOptions&);
 template Rgb displacement_slope_colour(const DisplacementTexture&, const SlopeVectorColorMap&, double, double, double,
+                                       double, double, double, const ViewAngles&,
+                                       const DisplacementSlopeColourOptions&);
+// The light-weighted maps (light_weighted_slope_map.h).
+template Rgb displacement_slope_colour(const DisplacementTexture&, const LightWeightedSlopeMap<SteepnessColorMap>&,
+                                       double, double, double, double, double, double, const ViewAngles&,
+                                       const DisplacementSlopeColourOptions&);
+template Rgb displacement_slope_colour(const DisplacementTexture&, const LightWeightedSlopeMap<SlopeVectorColorMap>&,
+                                       double, double, double, double, double, double, const ViewAngles&,
+                                       const DisplacementSlopeColourOptions&);
+template Rgb displacement_slope_colour(const DisplacementTexture&, const LightCosineSlopeMap&, double, double, double,
                                        double, double, double, const ViewAngles&,
                                        const DisplacementSlopeColourOptions&);
 

@@ -1,8 +1,10 @@
 #include "cmfilter/microsurface_albedo.h"
 
 #include "cmfilter/displacement_slope_colour.h"
+#include "cmfilter/light_weighted_slope_map.h"
 #include "cmfilter/slope_colour.h"
 
+#include <type_traits>
 #include <variant>
 
 namespace cmfilter {
@@ -15,22 +17,31 @@ Rgb slope_layer(const SlopeMap& map, const MicrosurfaceFootprint& f, const Resol
                 const HeightDirections& d, const MicrosurfaceLayerOptions& options,
                 const DisplacementTexture* displacement, const FootprintPiece* piece)
 {
+    const SlopeGaussian slopes{slope.x, slope.y, f.slope_xx, f.slope_xy, f.slope_yy};
+    const ViewAngles view{d.theta_o, d.phi_o};
+    // The mean of a (slope -> colour) function over D_s in the representation asked for.
+    const auto over_ds = [&](const auto& m) -> Rgb {
+        if (options.slopes == SlopeRepresentation::Exact && displacement && piece)
+            return displacement_slope_colour(*displacement, m, piece->u, piece->v, piece->e1u, piece->e1v,
+                                             piece->e2u, piece->e2v, view);
+        if (options.slopes == SlopeRepresentation::Exact) {
+            ExactSlopeColourOptions o;
+            o.panels = options.exact_panels;
+            return exact_slope_colour(m, slopes, view, o);
+        }
+        GaussianSlopeColourOptions o;
+        o.points_per_axis = options.hermite_points;
+        return gaussian_slope_colour(m, slopes, view, o);
+    };
     return std::visit(
         [&](const auto& m) -> Rgb {
             if (options.slopes == SlopeRepresentation::Naive) return m.evaluate(slope.x, slope.y);
-            const SlopeGaussian slopes{slope.x, slope.y, f.slope_xx, f.slope_xy, f.slope_yy};
-            const ViewAngles view{d.theta_o, d.phi_o};
-            if (options.slopes == SlopeRepresentation::Exact && displacement && piece)
-                return displacement_slope_colour(*displacement, m, piece->u, piece->v, piece->e1u, piece->e1v,
-                                                 piece->e2u, piece->e2v, view);
-            if (options.slopes == SlopeRepresentation::Exact) {
-                ExactSlopeColourOptions o;
-                o.panels = options.exact_panels;
-                return exact_slope_colour(m, slopes, view, o);
-            }
-            GaussianSlopeColourOptions o;
-            o.points_per_axis = options.hermite_points;
-            return gaussian_slope_colour(m, slopes, view, o);
+            if (options.slope_shading == SlopeShading::Uncorrelated) return over_ds(m);  // eq. 20
+            // <C_s lambda, D_s> / <lambda, D_s> (light_weighted_slope_map.h).
+            const LightDirection light = LightDirection::from_angles({d.theta_i, d.phi_i});
+            const double lit = over_ds(LightCosineSlopeMap{light}).r;
+            if (!(lit > 1e-12)) return over_ds(m);  // no facet faces the light: eq. 20's colour
+            return (1 / lit) * over_ds(LightWeightedSlopeMap<std::decay_t<decltype(m)>>{&m, light});
         },
         map);
 }

@@ -29,6 +29,7 @@
 
 #include "cmfilter/color.h"
 #include "cmfilter/height_filtered_albedo.h"
+#include "cmfilter/light_weighted_slope_map.h"
 #include "cmfilter/microsurface_footprint.h"
 #include "cmfilter/scene_materials.h"
 
@@ -44,6 +45,7 @@ struct MicrosurfaceLayerOptions {
     HeightRepresentation heights = HeightRepresentation::PaperFit;
     SlopeRepresentation slopes = SlopeRepresentation::Gaussian;
     MaskingShadowing masking = MaskingShadowing::Uncorrelated;
+    SlopeShading slope_shading = SlopeShading::Uncorrelated;
     int hermite_points = 12;  // GaussianSlopeColourOptions::points_per_axis
     // ExactSlopeColourOptions::panels: 8 (4096 map lookups a probe) is within
     // 0.017 mean and 0.17 max CIEDE2000 of 128 panels (docs/slope.md).

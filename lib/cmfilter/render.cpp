@@ -395,6 +395,7 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMate
     layer_options.heights = height_representation(options.method);
     layer_options.slopes = slope_representation(options.method);
     layer_options.masking = options.masking;
+    layer_options.slope_shading = options.slope_shading;
 
     std::atomic<int> rows_done{0};
     std::atomic<std::size_t> footprints{0}, plain_footprints{0};

@@ -19,13 +19,19 @@
 //                (a texture: f bilinear in its level 0) and shaded on its
 //                own; misses count as background;
 //   reference    supersample with at least 1024 rays (the paper's 32 x 32).
-// A microsurface material (scene.h; sec. 5.1) is coloured by height instead:
-// naive C_h of the footprint's mean height, gaussian V T(mean + mu_d,
-// sigma_d) with the paper's fit (eqs. 13, 17-18), gaussian-exact the same
-// with D_h's exact moments, exact V <C_h, D_h> (height_filtered_albedo.h,
-// over the heights the footprint does not resolve, microsurface_footprint.h);
-// supersample and reference trace the displaced plane and its shadow rays
-// (displaced_plane_sample.h) and estimate the eq. 14 albedo per pixel
+// A microsurface material (scene.h; secs. 5-6: a Gaussian microsurface or a
+// textured displacement) is coloured by its layers instead
+// (microsurface_albedo.h): by height, naive C_h of the footprint's mean
+// height, gaussian V T(mean + mu_d, sigma_d) with the paper's fit (eqs. 13,
+// 17-18), gaussian-exact the same with D_h's exact moments, exact V <C_h,
+// D_h> (height_filtered_albedo.h, over the heights the footprint does not
+// resolve, microsurface_footprint.h); by slope, naive C_s of the resolved
+// slope, gaussian and gaussian-exact V <C_s, Gaussian of D_s's moments>,
+// exact V <C_s, D_s> (slope_colour.h; a displacement's own slopes,
+// displacement_slope_colour.h); a base layer C0 filtered as gaussian does;
+// the layers summed with weights or multiplied. supersample and reference
+// trace the displaced plane and its shadow rays (displaced_plane_sample.h),
+// colour each hit by the combination and estimate the albedo per pixel
 // (docs/microsurface.md). gaussian-exact on a driver surface is gaussian.
 // The footprint is the parallelogram of the ray differentials in texture
 // space (surface_hit.h), cut along its major edge into up to max_probes
@@ -42,6 +48,7 @@
 
 #include "cmfilter/error.h"
 #include "cmfilter/footprint_width.h"
+#include "cmfilter/light_weighted_slope_map.h"
 #include "cmfilter/scene.h"
 #include "cmfilter/scene_materials.h"
 #include "cmfilter/smith_lambda.h"
@@ -81,6 +88,10 @@ struct RenderOptions {
     // Microsurfaces: how masking and shadowing combine (smith_lambda.h):
     // independent as in the paper's eq. 13, or correlated by azimuth.
     MaskingShadowing masking = MaskingShadowing::Uncorrelated;
+    // Microsurfaces coloured by slope: eq. 19's colour (the facets' shading
+    // uncorrelated with it), or weighted by each facet's cosine to the light
+    // (light_weighted_slope_map.h).
+    SlopeShading slope_shading = SlopeShading::Uncorrelated;
     std::function<void(double)> progress;  // fraction of rows done, may be empty
 };
 

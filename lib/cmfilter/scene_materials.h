@@ -15,6 +15,11 @@
 // its moment pyramid baked in process (bake-moments' defaults but periodic
 // wrap: scene textures repeat) into a temporary file that lives as long as
 // the material.
+// A microsurface material (scene.h) gets its Gaussian microsurface or
+// textured displacement, C_h in map and table when it has a height map, its
+// slope map (a steepness gradient laid over degrees, or a slope-vector
+// image), and its base layer: a SurfaceMaterial of its own (C0 and its
+// driver, loaded as above with the default table).
 // For `render --method exact` (MaterialOptions::histograms) a texture driver
 // also gets its histogram pyramid (histogram_pyramid.h), baked in process
 // from the same level-0 driver with the same wrap into a temporary file of

@@ -2,6 +2,7 @@
 
 #include "cmfilter/gauss_hermite.h"
 #include "cmfilter/gauss_legendre.h"
+#include "cmfilter/light_weighted_slope_map.h"
 
 #include <algorithm>
 #include <cmath>
@@ -100,6 +101,19 @@ template Rgb gaussian_slope_colour(const SlopeVectorColorMap&, const SlopeGaussi
 template Rgb exact_slope_colour(const SteepnessColorMap&, const SlopeGaussian&, const ViewAngles&,
                                 const ExactSlopeColourOptions&);
 template Rgb exact_slope_colour(const SlopeVectorColorMap&, const SlopeGaussian&, const ViewAngles&,
+                                const ExactSlopeColourOptions&);
+// The light-weighted maps (light_weighted_slope_map.h).
+template Rgb gaussian_slope_colour(const LightWeightedSlopeMap<SteepnessColorMap>&, const SlopeGaussian&,
+                                   const ViewAngles&, const GaussianSlopeColourOptions&);
+template Rgb gaussian_slope_colour(const LightWeightedSlopeMap<SlopeVectorColorMap>&, const SlopeGaussian&,
+                                   const ViewAngles&, const GaussianSlopeColourOptions&);
+template Rgb gaussian_slope_colour(const LightCosineSlopeMap&, const SlopeGaussian&, const ViewAngles&,
+                                   const GaussianSlopeColourOptions&);
+template Rgb exact_slope_colour(const LightWeightedSlopeMap<SteepnessColorMap>&, const SlopeGaussian&,
+                                const ViewAngles&, const ExactSlopeColourOptions&);
+template Rgb exact_slope_colour(const LightWeightedSlopeMap<SlopeVectorColorMap>&, const SlopeGaussian&,
+                                const ViewAngles&, const ExactSlopeColourOptions&);
+template Rgb exact_slope_colour(const LightCosineSlopeMap&, const SlopeGaussian&, const ViewAngles&,
                                 const ExactSlopeColourOptions&);
 
 }  // namespace cmfilter

@@ -39,8 +39,9 @@ struct ExactSlopeColourOptions {
     int panels = 32;
 };
 
-// SlopeMap: SteepnessColorMap or SlopeVectorColorMap (the two instantiations
-// slope_colour.cpp provides).
+// SlopeMap: SteepnessColorMap or SlopeVectorColorMap, or their light-weighted
+// forms and LightCosineSlopeMap (light_weighted_slope_map.h): the
+// instantiations slope_colour.cpp provides.
 template <typename SlopeMap>
 Rgb gaussian_slope_colour(const SlopeMap& map, const SlopeGaussian& slopes, const ViewAngles& view,
                           const GaussianSlopeColourOptions& options = {});

@@ -6,6 +6,7 @@
 // mean under the Gaussian of D_s's moments; and every colour finite and
 // inside the map's range over sweeps to theta = 90 degrees, vanishing and
 // huge spreads, near-singular covariances and large mean slopes.
+#include "cmfilter/light_weighted_slope_map.h"
 #include "cmfilter/slope_colour.h"
 
 #include <doctest/doctest.h>
@@ -45,8 +46,12 @@ SlopeVectorColorMap random_vector_map()
 // standard deviations of the slopes about their mean, each slope weighted by
 // max(0, <omega_o, n(s)>) / <z, n(s)> p(s) from the facet normal and the
 // Gaussian density, normalised by the weights' sum.
+// With a light l, each weight is also multiplied by the facet's cosine to it,
+// clamped at 0 (the shading correlated with the colour,
+// light_weighted_slope_map.h).
 template <typename Map>
-Rgb brute_force_colour(const Map& map, const SlopeGaussian& g, double theta, double phi, int n)
+Rgb brute_force_colour(const Map& map, const SlopeGaussian& g, double theta, double phi, int n,
+                       const LightDirection* light = nullptr)
 {
     const double ox = std::sin(theta) * std::cos(phi), oy = std::sin(theta) * std::sin(phi), oz = std::cos(theta);
     const double det = g.xx * g.yy - g.xy * g.xy;
@@ -58,7 +63,8 @@ Rgb brute_force_colour(const Map& map, const SlopeGaussian& g, double theta, dou
         for (int j = 0; j < n; ++j) {
             const double x = g.mean_x - 9 * sx + (i + 0.5) * hx, y = g.mean_y - 9 * sy + (j + 0.5) * hy;
             const double len = std::sqrt(1 + x * x + y * y);
-            const double w = std::max(0.0, (ox * -x + oy * -y + oz) / len) / (1 / len);
+            double w = std::max(0.0, (ox * -x + oy * -y + oz) / len) / (1 / len);
+            if (light) w *= std::max(0.0, (light->x * -x + light->y * -y + light->z) / len);
             const double dx = x - g.mean_x, dy = y - g.mean_y;
             const double q = (g.yy * dx * dx - 2 * g.xy * dx * dy + g.xx * dy * dy) / det;
             const double weight = w * std::exp(-0.5 * q);
@@ -216,4 +222,48 @@ TEST_CASE("slope colours are finite and inside the map's range to 90 degrees, fo
         }
     }
     CHECK(checked == 6 * 7 * 3 * 4 * 2);
+}
+
+namespace {
+
+// <C lambda, D_s> / <lambda, D_s> by exact_slope_colour over the two maps.
+template <typename Map>
+Rgb exact_lit_colour(const Map& map, const SlopeGaussian& g, const ViewAngles& view, const LightDirection& light)
+{
+    const double lit = exact_slope_colour(LightCosineSlopeMap{light}, g, view).r;
+    return (1 / lit) * exact_slope_colour(LightWeightedSlopeMap<Map>{&map, light}, g, view);
+}
+
+}  // namespace
+
+TEST_CASE("the light-weighted exact slope colour matches a brute-force sum weighted by the facets' light cosine")
+{
+    const SteepnessColorMap steep = steps();
+    const SlopeVectorColorMap vector = random_vector_map();
+    const SlopeGaussian shapes[] = {{0, 0, 0.04, 0, 0.04}, {0.25, -0.15, 0.36, 0.12, 0.16}, {0, 0, 0.64, -0.1, 0.25}};
+    double worst = 0;
+    for (const SlopeGaussian& g : shapes)
+        for (double view_degrees : {0.0, 60.0, 80.0})
+            for (double light_degrees : {0.0, 45.0, 75.0}) {
+                const double theta = view_degrees * kPi / 180, phi = 0.7;
+                const LightDirection l = LightDirection::from_angles({light_degrees * kPi / 180, 2.5});
+                CAPTURE(g.xx);
+                CAPTURE(view_degrees);
+                CAPTURE(light_degrees);
+                const double a = largest_channel_difference(exact_lit_colour(steep, g, {theta, phi}, l),
+                                                            brute_force_colour(steep, g, theta, phi, 800, &l));
+                const double b = largest_channel_difference(exact_lit_colour(vector, g, {theta, phi}, l),
+                                                            brute_force_colour(vector, g, theta, phi, 800, &l));
+                CHECK(a <= 1e-3);
+                CHECK(b <= 1e-3);
+                worst = std::max({worst, a, b});
+            }
+    MESSAGE("largest channel difference: " << worst);
+    // With the light overhead and a steepness map, the weighting leans to the flat colours: steep facets see
+    // the light at cos(slope angle), so the lit colour moves from the steep colours towards the flat ones.
+    const SlopeGaussian wide{0, 0, 0.64, 0, 0.64};
+    const Rgb plain = exact_slope_colour(steep, wide, {0, 0});
+    const Rgb lit = exact_lit_colour(steep, wide, {0, 0}, LightDirection{});
+    const Rgb flat = steep.evaluate(0, 0);
+    CHECK(std::abs(lit.g - flat.g) < std::abs(plain.g - flat.g));
 }
