@@ -5,8 +5,8 @@ A far patch of examples/scenes/snake-scales.exr (a textured displacement,
 one repeat per texture unit) seen through a narrow camera at each view angle
 (the light overhead), coloured by luts/snake-rims.png over the slope angle,
 every pixel's footprint 2 repeats wide: naive, gaussian (a Gaussian D_s of
-the footprint's slope moments), exact (D_s from the texture's own slopes)
-against the ray-traced reference, at the bundled relief (height_scale 1:
+the footprint's slope moments), exact (D_s from the texture's own slopes),
+both also with --slope-shading correlated, against the ray-traced reference, at the bundled relief (height_scale 1:
 slopes to about 60 degrees) and at half of it (to about 40 degrees).
 `cmfilter compare` gives the mean CIEDE2000. Writes WORK_DIR/snake-angles.csv
 and prints a Markdown table.
@@ -22,7 +22,15 @@ import subprocess
 
 ANGLES = [0, 20, 40, 60, 70, 80, 85]
 SCALES = [1.0, 0.5]
-METHODS = ["naive", "gaussian", "exact"]
+# Each series: its name and its render options.
+SERIES = {
+    "naive": ["--method", "naive"],
+    "gaussian": ["--method", "gaussian"],
+    "exact": ["--method", "exact"],
+    "gaussian shading-correlated": ["--method", "gaussian", "--slope-shading", "correlated"],
+    "exact shading-correlated": ["--method", "exact", "--slope-shading", "correlated"],
+}
+METHODS = list(SERIES)
 SIZE = 16
 FOV_DEGREES = 0.5
 FOOTPRINT = 2.0  # texture units (repeats) across a pixel
@@ -59,9 +67,9 @@ def main():
     os.makedirs(args.work, exist_ok=True)
     scene_path = os.path.join(args.work, "snake-patch.json")
 
-    def render(method, output, extra=()):
-        subprocess.run([cmfilter, "render", scene_path, "--method", method, "-o", output, "--threads",
-                        str(args.threads), "-q", *extra], check=True)
+    def render(options, output):
+        subprocess.run([cmfilter, "render", scene_path, *options, "-o", output, "--threads", str(args.threads), "-q"],
+                       check=True)
 
     def mean_de(a, b):
         out = subprocess.run([cmfilter, "compare", a, b, "--json"], check=True, capture_output=True, text=True)
@@ -73,11 +81,11 @@ def main():
             with open(scene_path, "w") as f:
                 json.dump(scene(root, angle, scale), f)
             reference = os.path.join(args.work, "reference.exr")
-            render("reference", reference, ["--spp", str(args.spp)])
+            render(["--method", "reference", "--spp", str(args.spp)], reference)
             row = {"height_scale": scale, "angle": angle}
             for method in METHODS:
-                image = os.path.join(args.work, method + ".exr")
-                render(method, image)
+                image = os.path.join(args.work, method.replace(" ", "-") + ".exr")
+                render(SERIES[method], image)
                 row[method] = round(mean_de(image, reference), 3)
             rows.append(row)
             print(row, flush=True)
