@@ -347,11 +347,11 @@ TEST_CASE("a microsurface with no layer at all is an error naming the material a
     json scene = slope_scene();
     material(scene).erase("slope_colormap");
     CHECK(error_of(scene) == kMaterial +
-                                 ": a microsurface material needs at least one of colormap (over heights), "
+                                 ": a microsurface or displacement material needs at least one of colormap (over heights), "
                                  "slope_colormap and base");
     // combine alone is no layer either.
     material(scene)["combine"] = json::parse(R"({"mode": "product"})");
-    CHECK(starts_with(error_of(scene), kMaterial + ": a microsurface material needs at least one of"));
+    CHECK(starts_with(error_of(scene), kMaterial + ": a microsurface or displacement material needs at least one of"));
 }
 
 TEST_CASE("a tolerance inside the base layer's colour map is an error naming it, and base keys are checked")
