@@ -15,7 +15,7 @@ WORK_DIR/NAME-angles.png (gnuplot) and prints the table of the docs.
     python3 tests/bench/microsurface_angle_sweep.py BUILD_DIR WORK_DIR
         --scene [LABEL=]SCENE.json [--scene [LABEL=]SCENE.json ...] --name NAME
         [--methods naive,gaussian,exact] [--setups view,light] [--angles 0,20,40]
-        [--title TEXT] [--threads N] [--spp N] [--size N] [--image-means]
+        [--title TEXT] [--key 'top right'] [--threads N] [--spp N] [--size N] [--image-means]
 
 With several scenes, each is a row of panels and the CSV gains a `scene`
 column (its LABEL, by default the file's name). A case already rendered in
@@ -46,6 +46,8 @@ SETUPS = {
     "both": "view and light at the angle, azimuths 90 degrees apart",
     "retro": "light from the viewer (same angle and azimuth)",
 }
+SHORT_SETUPS = {"view": "view swept", "light": "light swept", "both": "both, 90 degrees apart",
+                "retro": "light from the viewer"}
 FOV_DEGREES = 0.5       # every pixel within 0.25 degrees of the angle
 FOOTPRINT = 1.0         # texture units across a pixel (2.5 longest wavelengths)
 STYLES = {"naive": 'pt 9 lc rgb "red"', "gaussian": 'pt 7 lc rgb "blue"',
@@ -200,6 +202,7 @@ def main(argv=None, defaults=None):
     parser.add_argument("--threads", type=int, default=0)
     parser.add_argument("--spp", type=int, default=4096)
     parser.add_argument("--size", type=int, default=16)
+    parser.add_argument("--key", default="bottom left", help="where the chart's key goes (gnuplot's set key)")
     parser.add_argument("--image-means", action="store_true",
                         help="also the CIEDE2000 between the images' mean colours (CSV columns '... (means)')")
     parser.set_defaults(**defaults)
@@ -276,13 +279,13 @@ def main(argv=None, defaults=None):
                 f'set output "{work}/{args.name}-angles.png"\n'
                 f'set multiplot layout {len(scenes)},{len(setups)} title "{title}"\n'
                 'set grid\nset xrange [0:90]\nset xtics 10\nset logscale y\nset yrange [0.01:100]\n'
-                'set key bottom left samplen 2\nset ylabel "mean CIEDE2000"\n'
+                f'set key {args.key} samplen 2\nset ylabel "mean CIEDE2000"\n'
                 'set arrow 1 from 80, graph 0 to 80, graph 1 nohead dt 2 lc rgb "black"\n'
                 'set arrow 2 from graph 0, first 2 to graph 1, first 2 nohead dt 2 lc rgb "black"\n')
         index = 0
         for label, _ in scenes:
             for setup in setups:
-                panel = SETUPS[setup] if not several else f"{label}: {SETUPS[setup]}"
+                panel = SETUPS[setup] if not several else f"{label}: {SHORT_SETUPS[setup]}"
                 g.write(f'set title "{panel}"\nset xlabel "angle from the normal (degrees)"\n')
                 index = plot_panel(g, dat, index, series_list)
         g.write("unset multiplot\n")

@@ -12,8 +12,8 @@ colour depends on the slope it converges to
 which is not <C_s, D_s> unless <m, l>+ is the same on every facet. This
 script computes both on a grid of slopes, for isotropic Gaussian slopes of
 deviation SIGMA_S (no shadowing: the light cosine alone) and the set-ups of
-microsurface_angle_sweep.py (the view along +u, the light at azimuth 90
-degrees, along +v), and prints CIEDE2000 between them per angle: the error
+microsurface_angle_sweep.py (the view along +u; the light at azimuth 90
+degrees, along +v, or along the view for the light from the viewer), and prints CIEDE2000 between them per angle: the error
 that an exact eq. 19 would keep against the reference.
 
     python3 tests/bench/slope_light_weighting.py BUILD_DIR WORK_DIR [--sigma-s 0.432]
@@ -167,10 +167,10 @@ def main():
     print("| map | set-up | angle | CIEDE2000, <C_s, D_s> against the light-cosine-weighted mean |")
     print("|---|---|---:|---:|")
     for name, colour in maps.items():
-        for setup in ("view", "light"):
+        for setup in ("view", "light", "both", "retro"):
             for angle in ANGLES:
-                view = direction(angle if setup == "view" else 0, 0)
-                light = direction(angle if setup == "light" else 0, 90)
+                view = direction(angle if setup in ("view", "both", "retro") else 0, 0)
+                light = direction(angle if setup in ("light", "both", "retro") else 0, 0 if setup == "retro" else 90)
                 plain, lit = averages(colour, args.sigma_s, view, light)
                 de = ciede2000(cmfilter, work, plain, lit) if lit else float("nan")
                 print(f"| {name} | {setup} | {angle} | {de:.2f} |", flush=True)
