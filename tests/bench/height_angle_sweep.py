@@ -34,5 +34,6 @@ if __name__ == "__main__":
     microsurface_angle_sweep.main(defaults={
         "scene": [os.path.join(ROOT, "examples/scenes/plane-microsurface-sand-snow.json")],
         "name": "height",
+        "methods": "naive,gaussian,gaussian-exact,exact,gaussian-exact correlated",
         "title": "Height-correlated colour (sand-snow microsurface): mean CIEDE2000 against the ray-traced heightfield",
     })

@@ -38,6 +38,9 @@ SERIES = {
     "gaussian-exact": ["--method", "gaussian-exact"],
     "exact": ["--method", "exact"],
     "gaussian-exact correlated": ["--method", "gaussian-exact", "--masking", "correlated"],
+    "gaussian shading-correlated": ["--method", "gaussian", "--slope-shading", "correlated"],
+    "exact shading-correlated": ["--method", "exact", "--slope-shading", "correlated"],
+    "gaussian all-correlated": ["--method", "gaussian", "--slope-shading", "correlated", "--masking", "correlated"],
 }
 ANGLES = [0, 10, 20, 30, 40, 50, 60, 70, 75, 80, 85, 87, 89]
 SETUPS = {
@@ -53,6 +56,9 @@ FOOTPRINT = 1.0         # texture units across a pixel (2.5 longest wavelengths)
 STYLES = {"naive": 'pt 9 lc rgb "red"', "gaussian": 'pt 7 lc rgb "blue"',
           "gaussian-exact": 'pt 5 lc rgb "dark-violet"', "exact": 'pt 13 lc rgb "dark-green"',
           "gaussian-exact correlated": 'pt 4 dt 2 lc rgb "orange"',
+          "gaussian shading-correlated": 'pt 6 dt 2 lc rgb "blue"',
+          "exact shading-correlated": 'pt 12 dt 2 lc rgb "dark-green"',
+          "gaussian all-correlated": 'pt 8 dt 4 lc rgb "orange"',
           "reference_repeat": 'pt 1 dt 3 lc rgb "gray40"'}
 TITLES = {"reference_repeat": "reference vs itself (other seed)"}
 
