@@ -68,11 +68,14 @@ def direction(theta_degrees, azimuth_degrees):
     return [math.sin(t) * math.cos(a), math.cos(t), math.sin(t) * math.sin(a)]
 
 
+PATH_KEYS = ("image", "table", "sigma_table", "moments")
+
+
 def absolute_paths(value, folder):
-    """The material with every "image" path made absolute (relative ones are
-    relative to the scene's folder), so that it can be written elsewhere."""
+    """The material with every path (PATH_KEYS) made absolute (relative ones
+    are relative to the scene's folder), so that it can be written elsewhere."""
     if isinstance(value, dict):
-        return {k: (os.path.normpath(os.path.join(folder, v)) if k == "image" and isinstance(v, str)
+        return {k: (os.path.normpath(os.path.join(folder, v)) if k in PATH_KEYS and isinstance(v, str)
                     else absolute_paths(v, folder)) for k, v in value.items()}
     if isinstance(value, list):
         return [absolute_paths(v, folder) for v in value]
