@@ -16,7 +16,10 @@ WORK_DIR/combined-scales.png (gnuplot) and prints the table of the docs.
 
     python3 tests/bench/combined_scale_sweep.py BUILD_DIR WORK_DIR
         [--footprints 0.003,0.01,0.03,0.1,0.3,1,3,10] [--methods naive,gaussian,exact]
-        [--view 60] [--threads N] [--spp N] [--size N]
+        [--view 60] [--scene SCENE.json] [--threads N] [--spp N] [--size N]
+
+--scene takes another material with a sum of layers and a base layer (e.g.
+examples/scenes/plane-snake.json); the outputs keep their names.
 
 A case already rendered in WORK_DIR (its ...row.json) is not rendered again.
 """
@@ -32,10 +35,11 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 FOOTPRINTS = [0.003, 0.01, 0.03, 0.1, 0.3, 1, 3, 10]
 
 
-def variants(cmfilter, work, threads):
-    """The bundled material (summed) and its product, the base layer's noise
-    given a sigma table baked once (else every render bakes its own)."""
-    summed = sweep.bundled_material(os.path.join(ROOT, "examples/scenes/plane-microsurface-combined.json"))
+def variants(cmfilter, work, threads, scene):
+    """The scene's material (summed) and its product, the base layer's noise
+    given a sigma table baked once unless it names one (else every render
+    bakes its own)."""
+    summed = sweep.bundled_material(scene)
     driver = summed["base"]["driver"]
     if "noise" in driver and "sigma_table" not in driver:
         table = f"{work}/base-sigma.exr"
@@ -56,6 +60,8 @@ def main():
                         help="texture units across a pixel, comma-separated")
     parser.add_argument("--methods", default="naive,gaussian,exact")
     parser.add_argument("--view", type=float, default=60, help="the view's angle from the normal, degrees")
+    parser.add_argument("--scene", default=os.path.join(ROOT, "examples/scenes/plane-microsurface-combined.json"),
+                        help="a scene whose first material sums a base layer and microsurface layers")
     parser.add_argument("--threads", type=int, default=0)
     parser.add_argument("--spp", type=int, default=4096)
     parser.add_argument("--size", type=int, default=16)
@@ -68,7 +74,7 @@ def main():
     view = sweep.direction(args.view, 0)
     light = sweep.direction(45, 90)
     rows = []
-    for variant, material in variants(cmfilter, work, args.threads).items():
+    for variant, material in variants(cmfilter, work, args.threads, args.scene).items():
         for footprint in footprints:
             name = f"{work}/combined-{variant}-{footprint:g}"
             scene = name + ".json"
