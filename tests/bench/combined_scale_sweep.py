@@ -118,26 +118,35 @@ def main():
                     if r["combine"] == variant:
                         d.write(f"{r['footprint']} {max(float(r[series]), 1e-3)}\n")
                 d.write("\n\n")
+    summed = variants(cmfilter, work, args.threads, args.scene)["sum"]
+    names = {"base": "base", "height": "height", "slope": "slope"}
+    present = [k for k, key in (("base", "base"), ("height", "colormap"), ("slope", "slope_colormap"))
+               if key in summed]
+    weights = summed.get("combine", {}).get("weights", {})
+    sum_label = "sum: " + " + ".join(f"{weights.get(k, 1):g} {names[k]}" for k in present)
+    product_label = "product: " + " x ".join(names[k] for k in present)
     gp = f"{work}/combined-scales.gp"
     with open(gp, "w") as g:
         g.write('set terminal pngcairo size 1100,520 font ",11"\n'
                 f'set output "{work}/combined-scales.png"\n'
-                'set multiplot layout 1,2 title "Base + height + slope colour (combined microsurface), view at '
+                f'set multiplot layout 1,2 title "{os.path.basename(args.scene)}, view at '
                 f'{args.view:g} degrees: mean CIEDE2000 against the ray-traced heightfield"\n'
                 'set grid\nset logscale x\nset logscale y\nset yrange [0.01:100]\n'
                 'set key top right samplen 2\nset ylabel "mean CIEDE2000"\n'
                 'set xlabel "pixel width (texture units)"\n'
-                # The shortest and longest wavelengths, and a heightfield texel of the reference.
-                'set arrow 1 from 0.05, graph 0 to 0.05, graph 1 nohead dt 2 lc rgb "black"\n'
-                'set arrow 2 from 0.4, graph 0 to 0.4, graph 1 nohead dt 2 lc rgb "black"\n'
-                'set arrow 3 from 0.00625, graph 0 to 0.00625, graph 1 nohead dt 4 lc rgb "gray30"\n'
-                'set arrow 4 from graph 0, first 2 to graph 1, first 2 nohead dt 2 lc rgb "black"\n'
-                'set label 1 "shortest wavelength" at 0.05, graph 0.04 right offset -0.5,0 font ",9"\n'
-                'set label 2 "longest" at 0.4, graph 0.04 left offset 0.5,0 font ",9"\n'
-                'set label 3 "heightfield texel" at 0.00625, graph 0.10 left offset 0.5,0 font ",9"\n')
+                'set arrow 4 from graph 0, first 2 to graph 1, first 2 nohead dt 2 lc rgb "black"\n')
+        micro = summed.get("microsurface")
+        if micro:
+            # The shortest and longest wavelengths, and a heightfield texel of the reference (8 per shortest).
+            shortest, longest = micro["min_wavelength"], micro["max_wavelength"]
+            g.write(f'set arrow 1 from {shortest}, graph 0 to {shortest}, graph 1 nohead dt 2 lc rgb "black"\n'
+                    f'set arrow 2 from {longest}, graph 0 to {longest}, graph 1 nohead dt 2 lc rgb "black"\n'
+                    f'set arrow 3 from {shortest / 8}, graph 0 to {shortest / 8}, graph 1 nohead dt 4 lc rgb "gray30"\n'
+                    f'set label 1 "shortest wavelength" at {shortest}, graph 0.04 right offset -0.5,0 font ",9"\n'
+                    f'set label 2 "longest" at {longest}, graph 0.04 left offset 0.5,0 font ",9"\n'
+                    f'set label 3 "heightfield texel" at {shortest / 8}, graph 0.10 left offset 0.5,0 font ",9"\n')
         index = 0
-        for variant, label in (("sum", "sum: 0.3 base + 0.3 height + 0.4 slope"),
-                               ("product", "product: base x height x slope")):
+        for variant, label in (("sum", sum_label), ("product", product_label)):
             g.write(f'set title "{label}"\n')
             index = sweep.plot_panel(g, dat, index, series_list)
         g.write("unset multiplot\n")
