@@ -13,7 +13,10 @@
 #     (cmfilter bench: CSV + chart);
 #  4. render the bundled microsurface scene (colour by height: sand in the
 #     hollows, snow on the crests, masked and shadowed) by naive,
-#     gaussian-exact and the ray-traced reference, with each one's error.
+#     gaussian-exact and the ray-traced reference, with each one's error;
+#  5. render the slope-coloured scene (grass on the flat, rock on the steep),
+#     the combined one (base + height + slope) and the snake (a textured
+#     displacement) by gaussian.
 #   bash examples/run.sh CMFILTER_BINARY OUTPUT_DIR
 set -euo pipefail
 cmfilter=${1:?usage: run.sh CMFILTER_BINARY OUTPUT_DIR}
@@ -22,6 +25,9 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 mkdir -p "$out/tables" "$out/previews" "$out/filtered"
 for map in "$root"/luts/*.png; do
   name=$(basename "$map" .png)
+  # A 2-D slope-vector map (slope-wheel.png) has no table: it is filtered over
+  # slopes when rendering (docs/slope.md).
+  [ "$(oiiotool "$map" --echo "{TOP.height}")" = 1 ] || continue
   "$cmfilter" bake-colormap "$map" -o "$out/tables/$name.exr"
   "$cmfilter" info "$out/tables/$name.exr" > "$out/tables/$name.txt"
   oiiotool "$out/tables/$name.exr" --resize 512x256 --colorconvert linear sRGB -d uint8 \
@@ -32,8 +38,8 @@ driver="$root/examples/noise-driver.png"
 "$cmfilter" bake-moments "$driver" -o "$out/filtered/noise-moments.exr"
 summary="$out/filtered/summary.txt"
 printf '%-12s %4s %14s %14s\n' map LOD "naive dE00" "gaussian dE00" > "$summary"
-for map in "$root"/luts/*.png; do
-  name=$(basename "$map" .png)
+for table in "$out"/tables/*.exr; do
+  name=$(basename "$table" .exr)
   for lod in 0 3 6; do
     for method in reference naive gaussian; do
       # Texels of the driver beyond the map's domain take its end colours in
@@ -72,6 +78,10 @@ for method in naive gaussian-exact; do
   "$cmfilter" compare "$out/render/sand-snow-$method.exr" "$out/render/sand-snow-reference.exr" \
     | awk -v m="$method" '$1 == "dE2000" && $2 == "mean" { printf "  %-16s %8.3f dE00\n", m, $3 }'
 done
+for scene in plane-microsurface-grass-rock plane-microsurface-combined plane-snake; do
+  "$cmfilter" render "$root/examples/scenes/$scene.json" --method gaussian -o "$out/render/$scene.exr" -q
+  oiiotool "$out/render/$scene.exr" --colorconvert linear sRGB -d uint8 -o "$out/render/$scene.png"
+done
 echo
 echo "example outputs in $out:"
 echo "  tables/*.exr      prefiltered colour-map tables (open with oiiotool --info -v or cmfilter info)"
@@ -82,3 +92,5 @@ echo "  filtered/summary.txt  mean CIEDE2000 of naive and gaussian against the r
 echo "  render/*.png      the ground-plane scene by naive and gaussian; render/plane-fbm-terrain.png: error vs time"
 echo "  render/bench.csv  every method's time and error against the reference (docs/render.md)"
 echo "  render/sand-snow-*.png  the microsurface scene by naive, gaussian-exact and reference (docs/microsurface.md)"
+echo "  render/plane-microsurface-grass-rock.png, plane-microsurface-combined.png, plane-snake.png"
+echo "                    colour by slope, combined layers and the snake, by gaussian (docs/microsurface.md)"
