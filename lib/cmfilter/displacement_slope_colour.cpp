@@ -14,9 +14,8 @@ Rgb displacement_slope_colour(const DisplacementTexture& texture, const SlopeMap
 {
     // The plastic number's lattice (the 2-D golden ratio).
     constexpr double kAlpha1 = 0.7548776662466927, kAlpha2 = 0.5698402909980532;
-    const double theta = std::isnan(view.theta) ? 0.0 : std::clamp(view.theta, 0.0, 1.5707963267948966);
-    const double cos_t = std::cos(theta), sin_t = std::sin(theta);
-    const double dx = std::cos(view.phi), dy = std::sin(view.phi);
+    const SlopeViewFrame frame = slope_view_frame({}, view);  // theta and phi read as eq. 20 reads them
+    const double cos_t = frame.cos_theta, sin_t = frame.sin_theta, dx = frame.dx, dy = frame.dy;
     const auto finite_or_zero = [](double x) { return std::isfinite(x) ? x : 0.0; };
     e1u = finite_or_zero(e1u), e1v = finite_or_zero(e1v), e2u = finite_or_zero(e2u), e2v = finite_or_zero(e2v);
     const int n = std::max(1, options.samples);

@@ -33,10 +33,12 @@ enum class SlopeShading { Uncorrelated, Correlated };
 // The light's direction in the plane's frame (z the normal).
 struct LightDirection {
     double x = 0, y = 0, z = 1;
+    // Angles read as slope_view_frame reads a view's (NaN theta as 0, from 90
+    // degrees on exactly at the horizon).
     static LightDirection from_angles(const ViewAngles& light)
     {
-        const double theta = std::isnan(light.theta) ? 0.0 : std::clamp(light.theta, 0.0, 1.5707963267948966);
-        return {std::sin(theta) * std::cos(light.phi), std::sin(theta) * std::sin(light.phi), std::cos(theta)};
+        const SlopeViewFrame f = slope_view_frame({}, light);
+        return {f.sin_theta * f.dx, f.sin_theta * f.dy, f.cos_theta};
     }
     // lambda(s): the facet of slope s's cosine to the light, clamped at 0.
     double facet_cosine(double sx, double sy) const

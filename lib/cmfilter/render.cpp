@@ -292,9 +292,9 @@ Status check_level0(const std::vector<SurfaceMaterial>& materials, RenderMethod 
         for (const SurfaceMaterial* m : {&material, material.base.get()})
             if (m && m->texture && !m->texture->has_level0())
                 return io_error(m->missing_driver + "; " + to_string(method) +
-                            " reads the driver's texels at each ray's hit (naive and gaussian need only the "
-                            "moments): re-bake the moments from the driver where it is now, or name the driver "
-                            "itself with driver/image");
+                                " reads the driver's texels at each ray's hit (naive and gaussian need only the "
+                                "moments): re-bake the moments from the driver where it is now, or name the "
+                                "driver itself with driver/image");
     return ok();
 }
 
