@@ -1,54 +1,74 @@
 #include "cmfilter/displacement_slope_colour.h"
 
-#include "cmfilter/light_weighted_slope_map.h"
-
 #include <algorithm>
 #include <cmath>
 
 namespace cmfilter {
 
 template <typename SlopeMap>
-Rgb displacement_slope_colour(const DisplacementTexture& texture, const SlopeMap& map, double u, double v,
-                              double e1u, double e1v, double e2u, double e2v, const ViewAngles& view,
-                              const DisplacementSlopeColourOptions& options)
+DisplacementSlopeLayer displacement_slope_layer(const DisplacementTexture& texture, const SlopeMap* map,
+                                                const FootprintPiece& piece, const HeightDirections& d,
+                                                const DisplacementSlopeColourOptions& options)
 {
     // The plastic number's lattice (the 2-D golden ratio).
     constexpr double kAlpha1 = 0.7548776662466927, kAlpha2 = 0.5698402909980532;
+    const ViewAngles view{d.theta_o, d.phi_o}, light_angles{d.theta_i, d.phi_i};
     const SlopeViewFrame frame = slope_view_frame({}, view);  // theta and phi read as eq. 20 reads them
     const double cos_t = frame.cos_theta, sin_t = frame.sin_theta, dx = frame.dx, dy = frame.dy;
+    const LightDirection light = LightDirection::from_angles(light_angles);
+    const DisplacementMasking& masking = texture.masking();
+    const double lambda_o = masking.lambda(view), lambda_i = masking.lambda(light_angles);
+    const double lambda_seen_lit = lambda_sum(lambda_o, lambda_i, d.phi_o - d.phi_i, options.masking);
+    const bool correlated = options.shading == SlopeShading::Correlated;
+
     const auto finite_or_zero = [](double x) { return std::isfinite(x) ? x : 0.0; };
-    e1u = finite_or_zero(e1u), e1v = finite_or_zero(e1v), e2u = finite_or_zero(e2u), e2v = finite_or_zero(e2v);
+    const double u = finite_or_zero(piece.u), v = finite_or_zero(piece.v);
+    const double e1u = finite_or_zero(piece.e1u), e1v = finite_or_zero(piece.e1v);
+    const double e2u = finite_or_zero(piece.e2u), e2v = finite_or_zero(piece.e2v);
     const int n = std::max(1, options.samples);
-    Rgb weighted, plain;
-    double weight = 0;
+    Rgb colour_sum, seen_colour_sum, plain;
+    double seen_sum = 0, seen_lit_sum = 0, seen_area_sum = 0;  // weights as the colour takes them (times lambda_k when correlated)
     for (int k = 0; k < n; ++k) {
         const double a = std::fmod((k + 0.5) * kAlpha1, 1.0) - 0.5, b = std::fmod((k + 0.5) * kAlpha2, 1.0) - 0.5;
+        const double x = u + a * e1u + b * e2u, y = v + a * e1v + b * e2v;
         double sx = 0, sy = 0;
-        texture.slope(u + a * e1u + b * e2u, v + a * e1v + b * e2v, sx, sy);
-        const Rgb c = map.evaluate(sx, sy);
-        const double w = std::max(0.0, cos_t - sin_t * (sx * dx + sy * dy));  // eq. 20's weight
-        weighted += w * c;
-        weight += w;
-        plain += c;
+        texture.slope(x, y, sx, sy);
+        const double f = masking.height_cdf(texture.height(x, y));
+        const double area = std::max(0.0, cos_t - sin_t * (sx * dx + sy * dy));  // eq. 20's weight
+        const double shading = correlated ? light.facet_cosine(sx, sy) : 1.0;
+        const double seen_area = area * std::pow(f, lambda_o);  // G1 (eq. 2)
+        const double seen = seen_area * shading;
+        const double seen_lit = area * std::pow(f, lambda_seen_lit) * shading;
+        seen_sum += seen;
+        seen_lit_sum += seen_lit;
+        seen_area_sum += seen_area;
+        if (map) {
+            const Rgb c = map->evaluate(sx, sy);
+            colour_sum += (correlated ? seen_lit : seen) * c;
+            seen_colour_sum += seen_area * c;
+            plain += c;
+        }
     }
-    return weight > 0 ? (1.0 / weight) * weighted : (1.0 / n) * plain;
+    DisplacementSlopeLayer out;
+    const double colour_weight = correlated ? seen_lit_sum : seen_sum;
+    if (map) {
+        if (colour_weight > 0)
+            out.colour = (1.0 / colour_weight) * colour_sum;
+        else if (seen_area_sum > 0)  // seen, but nothing seen faces the light: eq. 20's colour
+            out.colour = (1.0 / seen_area_sum) * seen_colour_sum;
+        else
+            out.colour = (1.0 / n) * plain;
+    }
+    out.visibility = seen_sum > 0 ? std::clamp(seen_lit_sum / seen_sum, 0.0, 1.0)
+                                  : mean_visibility(lambda_o, lambda_i, d.phi_o - d.phi_i, options.masking);
+    return out;
 }
 
-template Rgb displacement_slope_colour(const DisplacementTexture&, const SteepnessColorMap&, double, double, double,
-                                       double, double, double, const ViewAngles&,
-                                       const DisplacementSlopeColourOptions&);
-template Rgb displacement_slope_colour(const DisplacementTexture&, const SlopeVectorColorMap&, double, double, double,
-                                       double, double, double, const ViewAngles&,
-                                       const DisplacementSlopeColourOptions&);
-// The light-weighted maps (light_weighted_slope_map.h).
-template Rgb displacement_slope_colour(const DisplacementTexture&, const LightWeightedSlopeMap<SteepnessColorMap>&,
-                                       double, double, double, double, double, double, const ViewAngles&,
-                                       const DisplacementSlopeColourOptions&);
-template Rgb displacement_slope_colour(const DisplacementTexture&, const LightWeightedSlopeMap<SlopeVectorColorMap>&,
-                                       double, double, double, double, double, double, const ViewAngles&,
-                                       const DisplacementSlopeColourOptions&);
-template Rgb displacement_slope_colour(const DisplacementTexture&, const LightCosineSlopeMap&, double, double, double,
-                                       double, double, double, const ViewAngles&,
-                                       const DisplacementSlopeColourOptions&);
+template DisplacementSlopeLayer displacement_slope_layer(const DisplacementTexture&, const SteepnessColorMap*,
+                                                         const FootprintPiece&, const HeightDirections&,
+                                                         const DisplacementSlopeColourOptions&);
+template DisplacementSlopeLayer displacement_slope_layer(const DisplacementTexture&, const SlopeVectorColorMap*,
+                                                         const FootprintPiece&, const HeightDirections&,
+                                                         const DisplacementSlopeColourOptions&);
 
 }  // namespace cmfilter

@@ -1,44 +1,76 @@
-// The slope-filtered colour <C_s, D_s> of eq. 20 (Heitz et al. 2013, sec.
-// 5.2) on a textured displacement (displacement_texture.h), from its own
-// slopes rather than a Gaussian: D_s is the distribution of the slopes over
-// the footprint weighted by their visible projected area,
-//     w(s) = max(0, cos t - sin t <s, d>)        (slope_filtering.h),
-// so for slopes s_k sampled uniformly over the footprint
-//     <C_s, D_s> ~ sum_k C_s(s_k) w(s_k) / sum_k w(s_k).
+// The slope layer of a textured displacement (displacement_texture.h) from
+// its own slopes and heights rather than a Gaussian (Heitz et al. 2013, sec.
+// 5.2): the `exact` method's colour <C_s, D_s> (eq. 20) and visibility V
+// (eqs. 13 and 19) there.
+//
+// Points x_k sampled uniformly over the footprint carry their slope s_k and
+// height h_k. Eq. 20 weighs a slope by its visible projected area,
+//     a(s) = max(0, cos t - sin t <s, d>)        (slope_filtering.h),
+// and takes the visible facets' heights as independent of their slopes. On
+// a relief they are not (scales: flat tops high, steep rims low), so each
+// point is also weighted by Smith's probability that it is seen, and seen and
+// lit, from its height (displacement_masking.h):
+//     seen_k     = a(s_k) F(h_k)^Lambda_o,
+//     seen_lit_k = a(s_k) F(h_k)^L,   L = Lambda_o + Lambda_i (eq. 13), or
+//                                     its direction-correlated form,
+// F the surface's height CDF and the Lambdas from its own slopes. Then
+//     <C_s, D_s> = sum seen_k C_s(s_k) / sum seen_k,
+//     V          = sum seen_lit_k / sum seen_k           (eq. 13's share lit),
+// and with the shading correlated with the colour (light_weighted_slope_map.h),
+// lambda_k = max(0, <n(s_k), l>),
+//     colour     = sum seen_lit_k lambda_k C_s(s_k) / sum seen_lit_k lambda_k,
+//     V          = sum seen_lit_k lambda_k / sum seen_k lambda_k,
+// whose product V colour is what the ray-traced reference's albedo estimate,
+// sum C V_i <m, l>+ / sum <m, l>+ over the hits, measures. F and Lambda
+// constant over the footprint (a flat surface, or theta = 0) give back eq. 20
+// and eq. 13's V for these slopes.
+//
 // The samples lie on a rank-2 Kronecker (golden-ratio) lattice over the
 // parallelogram, c + (a_k - 1/2) e1 + (b_k - 1/2) e2 with (a_k, b_k) =
 // frac((k + 1/2) (alpha1, alpha2)), alpha the plastic-number lattice: no
 // period of the texture is commensurate with it, so a footprint of many
 // repeats samples the whole pattern evenly; a point footprint samples its
-// one slope. A textured relief's slopes are seldom Gaussian (scales: flat
-// tops and steep rims), which a Gaussian D_s cannot represent, whatever its
-// moments; this is the `exact` method's colour there. Where every slope is
-// hidden (w = 0 throughout: at 90 degrees), the unweighted mean.
+// one point. Where no point is seen (at 90 degrees), the unweighted mean
+// colour and eq. 13's limits for V.
 #pragma once
 
 #include "cmfilter/color.h"
 #include "cmfilter/displacement_texture.h"
+#include "cmfilter/height_filtered_albedo.h"
+#include "cmfilter/light_weighted_slope_map.h"
 #include "cmfilter/slope_color_map.h"
-#include "cmfilter/slope_filtering.h"
+#include "cmfilter/smith_lambda.h"
 
 namespace cmfilter {
 
-struct DisplacementSlopeColourOptions {
-    int samples = 4096;  // >= 1
+// A footprint's parallelogram: centre (u, v), edges e1 and e2, texture units.
+struct FootprintPiece {
+    double u = 0, v = 0, e1u = 0, e1v = 0, e2u = 0, e2v = 0;
 };
 
-// SlopeMap: SteepnessColorMap or SlopeVectorColorMap. The footprint: centre
-// (u, v), edges (e1u, e1v) and (e2u, e2v), texture units.
-template <typename SlopeMap>
-Rgb displacement_slope_colour(const DisplacementTexture& texture, const SlopeMap& map, double u, double v,
-                              double e1u, double e1v, double e2u, double e2v, const ViewAngles& view,
-                              const DisplacementSlopeColourOptions& options = {});
+struct DisplacementSlopeColourOptions {
+    int samples = 4096;  // >= 1
+    MaskingShadowing masking = MaskingShadowing::Uncorrelated;
+    SlopeShading shading = SlopeShading::Uncorrelated;
+};
 
-extern template Rgb displacement_slope_colour(const DisplacementTexture&, const SteepnessColorMap&, double, double,
-                                              double, double, double, double, const ViewAngles&,
-                                              const DisplacementSlopeColourOptions&);
-extern template Rgb displacement_slope_colour(const DisplacementTexture&, const SlopeVectorColorMap&, double, double,
-                                              double, double, double, double, const ViewAngles&,
-                                              const DisplacementSlopeColourOptions&);
+struct DisplacementSlopeLayer {
+    Rgb colour;           // black without a map
+    double visibility = 1;
+};
+
+// SlopeMap: SteepnessColorMap or SlopeVectorColorMap; a null map gives the
+// visibility alone.
+template <typename SlopeMap>
+DisplacementSlopeLayer displacement_slope_layer(const DisplacementTexture& texture, const SlopeMap* map,
+                                                const FootprintPiece& piece, const HeightDirections& directions,
+                                                const DisplacementSlopeColourOptions& options = {});
+
+extern template DisplacementSlopeLayer displacement_slope_layer(const DisplacementTexture&, const SteepnessColorMap*,
+                                                                const FootprintPiece&, const HeightDirections&,
+                                                                const DisplacementSlopeColourOptions&);
+extern template DisplacementSlopeLayer displacement_slope_layer(const DisplacementTexture&, const SlopeVectorColorMap*,
+                                                                const FootprintPiece&, const HeightDirections&,
+                                                                const DisplacementSlopeColourOptions&);
 
 }  // namespace cmfilter

@@ -204,6 +204,7 @@ Expected<DisplacementTexture> DisplacementTexture::from_texels(std::vector<float
             }
         }
     }
+    data->masking = DisplacementMasking::from_texels(data->h, data->sx, data->sy, n);
     return DisplacementTexture(std::move(data));
 }
 

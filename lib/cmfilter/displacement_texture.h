@@ -84,6 +84,7 @@
 // thread-safe; no global state.
 #pragma once
 
+#include "cmfilter/displacement_masking.h"
 #include "cmfilter/driver_image.h"
 #include "cmfilter/error.h"
 #include "cmfilter/heightfield_tracer.h"
@@ -156,6 +157,9 @@ public:
     std::pair<double, double> heightfield_xy(double u, double v) const;
     std::pair<double, double> texture_uv(double x, double y) const;
 
+    // Smith's masking from the texels' own heights and slopes.
+    const DisplacementMasking& masking() const { return data_->masking; }
+
 private:
     struct Data {
         std::string path;
@@ -167,6 +171,7 @@ private:
         std::vector<std::vector<float>> levels;  // kChannels interleaved; h about `reference`
         std::array<double, kChannels> centre{};  // each channel's mean over the surface
         std::vector<double> table;  // of the texel squares' moments, (N + 1)^2 x kChannels, about `centre`
+        DisplacementMasking masking;
     };
     explicit DisplacementTexture(std::shared_ptr<const Data> data) : data_(std::move(data)) {}
     std::shared_ptr<const Data> data_;

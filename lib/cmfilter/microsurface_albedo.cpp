@@ -14,16 +14,12 @@ namespace {
 // <C_s, D_s> (eq. 20) for the slopes N(resolved mean, unresolved covariance)
 // seen from the view.
 Rgb slope_layer(const SlopeMap& map, const MicrosurfaceFootprint& f, const ResolvedSlope& slope,
-                const HeightDirections& d, const MicrosurfaceLayerOptions& options,
-                const DisplacementTexture* displacement, const FootprintPiece* piece)
+                const HeightDirections& d, const MicrosurfaceLayerOptions& options)
 {
     const SlopeGaussian slopes{slope.x, slope.y, f.slope_xx, f.slope_xy, f.slope_yy};
     const ViewAngles view{d.theta_o, d.phi_o};
     // The mean of a (slope -> colour) function over D_s in the representation asked for.
     const auto over_ds = [&](const auto& m) -> Rgb {
-        if (options.slopes == SlopeRepresentation::Exact && displacement && piece)
-            return displacement_slope_colour(*displacement, m, piece->u, piece->v, piece->e1u, piece->e1v,
-                                             piece->e2u, piece->e2v, view);
         if (options.slopes == SlopeRepresentation::Exact) {
             ExactSlopeColourOptions o;
             o.panels = options.exact_panels;
@@ -44,6 +40,21 @@ Rgb slope_layer(const SlopeMap& map, const MicrosurfaceFootprint& f, const Resol
             return (1 / lit) * over_ds(LightWeightedSlopeMap<std::decay_t<decltype(m)>>{&m, light});
         },
         map);
+}
+
+// The slope layer and V of a textured displacement from its own slopes and
+// heights over the piece (displacement_slope_colour.h).
+DisplacementSlopeLayer sampled_displacement_layer(const SurfaceMaterial& m, const HeightDirections& d,
+                                                  const MicrosurfaceLayerOptions& options,
+                                                  const FootprintPiece& piece)
+{
+    DisplacementSlopeColourOptions o;
+    o.masking = options.masking;
+    o.shading = options.slope_shading;
+    if (!m.slope_map)
+        return displacement_slope_layer(*m.displacement, static_cast<const SteepnessColorMap*>(nullptr), piece, d, o);
+    return std::visit([&](const auto& map) { return displacement_slope_layer(*m.displacement, &map, piece, d, o); },
+                      *m.slope_map);
 }
 
 Rgb times(const Rgb& a, const Rgb& b) { return {a.r * b.r, a.g * b.g, a.b * b.b}; }
@@ -67,9 +78,13 @@ MicrosurfaceLayers microsurface_layers(const SurfaceMaterial& m, const Microsurf
     } else if (options.heights != HeightRepresentation::Naive) {
         out.visibility = microsurface_visibility(f, d, options.masking).total();
     }
-    if (m.slope_map)
-        slope_colour = slope_layer(*m.slope_map, f, slope, d, options,
-                                   m.displacement ? &*m.displacement : nullptr, piece);
+    if (options.slopes == SlopeRepresentation::Exact && m.displacement && piece) {
+        const DisplacementSlopeLayer sampled = sampled_displacement_layer(m, d, options, *piece);
+        out.visibility = sampled.visibility;
+        if (m.slope_map) slope_colour = sampled.colour;
+    } else if (m.slope_map) {
+        slope_colour = slope_layer(*m.slope_map, f, slope, d, options);
+    }
     const ColourCombination& c = m.combine;
     Rgb layers;
     if (c.mode == CombineMode::Sum) {

@@ -8,7 +8,9 @@
 //   base    C0 over a driver that ignores the microsurface, V C0-bar, its
 //           driver filtered as a plain material's (sec. 4).
 // V is eq. 13's mean visibility times the resolved heights' shadowing V_r
-// (height_filtered_albedo.h), shared by every layer. Eq. 19 also takes the
+// (height_filtered_albedo.h), shared by every layer (exact on a textured
+// displacement: Smith's from the sampled heights and slopes,
+// displacement_slope_colour.h). Eq. 19 also takes the
 // BRDF's mean rho-bar out of the colour, assuming C_s and rho uncorrelated;
 // here, as for heights, rho-bar is the renderer's shading of the mean
 // plane, so what this gives is an albedo.
@@ -28,6 +30,7 @@
 #pragma once
 
 #include "cmfilter/color.h"
+#include "cmfilter/displacement_slope_colour.h"
 #include "cmfilter/height_filtered_albedo.h"
 #include "cmfilter/light_weighted_slope_map.h"
 #include "cmfilter/microsurface_footprint.h"
@@ -61,16 +64,12 @@ struct MicrosurfaceLayers {
     double mean = 0, sigma = 0;
 };
 
-// The probe's parallelogram: centre (u, v), edges e1 and e2, texture units.
-struct FootprintPiece {
-    double u = 0, v = 0, e1u = 0, e1v = 0, e2u = 0, e2v = 0;
-};
-
 // `slope` is the resolved mean slope over the probe (needed with a slope
 // map; ignored otherwise). `table` serves HeightRepresentation::ExactMoments.
-// On a textured displacement, SlopeRepresentation::Exact takes D_s from the
-// texture's own slopes over `piece` (displacement_slope_colour.h; without a
-// piece, from the Gaussian of the footprint's moments as elsewhere).
+// On a textured displacement, SlopeRepresentation::Exact takes D_s and V from
+// the texture's own slopes and heights over `piece`
+// (displacement_slope_colour.h; without a piece, from the Gaussian of the
+// footprint's moments as elsewhere).
 MicrosurfaceLayers microsurface_layers(const SurfaceMaterial& material, const MicrosurfaceFootprint& footprint,
                                        const ResolvedSlope& slope, const HeightDirections& directions,
                                        const MicrosurfaceLayerOptions& options, const HeightMomentTable& table,
