@@ -31,8 +31,8 @@ struct RenderArgs {
     int samples = 16;
     int probes = 16;
     bool no_edge_coverage = false;
-    std::string masking = "uncorrelated";
-    std::string slope_shading = "uncorrelated";
+    std::string masking = "correlated";
+    std::string slope_shading = "correlated";
     std::uint64_t seed = 0;
     std::string footprint = "rms";
     std::string aov;
@@ -152,8 +152,9 @@ Status run(const RenderArgs& args)
         return bad_input("--probes " + std::to_string(args.probes) + " is out of range (expected 1 to 64)");
     options.max_probes = args.probes;
     options.edge_coverage = !args.no_edge_coverage;
-    if (args.masking == "correlated") options.masking = MaskingShadowing::DirectionCorrelated;
-    if (args.slope_shading == "correlated") options.slope_shading = SlopeShading::Correlated;
+    options.masking =
+        args.masking == "correlated" ? MaskingShadowing::DirectionCorrelated : MaskingShadowing::Uncorrelated;
+    options.slope_shading = args.slope_shading == "correlated" ? SlopeShading::Correlated : SlopeShading::Uncorrelated;
     if (talk && isatty(STDERR_FILENO)) options.progress = terminal_progress("render");
     auto image = render(*scene, *materials, options);
     if (!image) return image.error();
@@ -242,13 +243,13 @@ Command setup_render(CLI::App& parent)
                     "Filter an anisotropic footprint as up to N probes along its major edge (naive, gaussian, exact)")
         ->capture_default_str();
     app->add_option("--masking", args->masking,
-                    "Microsurfaces: masking and shadowing independent (uncorrelated, the paper's eq. 13) or correlated "
-                    "by the view's and the light's azimuths (correlated)")
+                    "Microsurfaces: masking and shadowing correlated by the view's and the light's azimuths "
+                    "(correlated) or independent (uncorrelated, the paper's eq. 13)")
         ->capture_default_str();
     app->add_option("--slope-shading", args->slope_shading,
-                    "Microsurfaces coloured by slope: the facets' shading independent of their colour "
-                    "(uncorrelated, the paper's eq. 19) or each slope weighted by its facet's cosine to the light "
-                    "(correlated)")
+                    "Microsurfaces coloured by slope: each slope weighted by its facet's cosine to the light "
+                    "(correlated) or the facets' shading independent of their colour (uncorrelated, the paper's "
+                    "eq. 19)")
         ->capture_default_str();
     app->add_flag("--no-edge-coverage", args->no_edge_coverage,
                   "naive, gaussian, exact: take the centre ray's surface for the whole pixel, also on silhouettes "

@@ -31,16 +31,18 @@ import math
 import os
 import subprocess
 
-# Each series: its name and its render options.
+# Each series: its name and its render options. The plain method names are
+# the paper's model (eqs. 13 and 19); render's defaults are "all-correlated".
 SERIES = {
     "naive": ["--method", "naive"],
-    "gaussian": ["--method", "gaussian"],
-    "gaussian-exact": ["--method", "gaussian-exact"],
-    "exact": ["--method", "exact"],
-    "gaussian-exact correlated": ["--method", "gaussian-exact", "--masking", "correlated"],
-    "gaussian shading-correlated": ["--method", "gaussian", "--slope-shading", "correlated"],
-    "exact shading-correlated": ["--method", "exact", "--slope-shading", "correlated"],
+    "gaussian": ["--method", "gaussian", "--masking", "uncorrelated", "--slope-shading", "uncorrelated"],
+    "gaussian-exact": ["--method", "gaussian-exact", "--masking", "uncorrelated", "--slope-shading", "uncorrelated"],
+    "exact": ["--method", "exact", "--masking", "uncorrelated", "--slope-shading", "uncorrelated"],
+    "gaussian-exact correlated": ["--method", "gaussian-exact", "--masking", "correlated", "--slope-shading", "uncorrelated"],
+    "gaussian shading-correlated": ["--method", "gaussian", "--slope-shading", "correlated", "--masking", "uncorrelated"],
+    "exact shading-correlated": ["--method", "exact", "--slope-shading", "correlated", "--masking", "uncorrelated"],
     "gaussian all-correlated": ["--method", "gaussian", "--slope-shading", "correlated", "--masking", "correlated"],
+    "exact all-correlated": ["--method", "exact", "--slope-shading", "correlated", "--masking", "correlated"],
 }
 ANGLES = [0, 10, 20, 30, 40, 50, 60, 70, 75, 80, 85, 87, 89]
 SETUPS = {
@@ -59,6 +61,7 @@ STYLES = {"naive": 'pt 9 lc rgb "red"', "gaussian": 'pt 7 lc rgb "blue"',
           "gaussian shading-correlated": 'pt 6 dt 2 lc rgb "blue"',
           "exact shading-correlated": 'pt 12 dt 2 lc rgb "dark-green"',
           "gaussian all-correlated": 'pt 8 dt 4 lc rgb "orange"',
+          "exact all-correlated": 'pt 10 dt 4 lc rgb "dark-green"',
           "reference_repeat": 'pt 1 dt 3 lc rgb "gray40"'}
 TITLES = {"reference_repeat": "reference vs itself (other seed)"}
 

@@ -3,15 +3,17 @@
 
 A far patch of examples/scenes/snake-scales.exr (a textured displacement,
 one repeat per texture unit) seen through a narrow camera at each view angle
-(the light overhead), coloured by luts/snake-rims.png over the slope angle,
+(the light overhead, or at --light THETA,AZIMUTH degrees: from the normal,
+and from the view's azimuth), coloured by luts/snake-rims.png over the slope angle,
 every pixel's footprint 2 repeats wide: naive, gaussian (a Gaussian D_s of
 the footprint's slope moments), exact (D_s from the texture's own slopes),
-both also with --slope-shading correlated, against the ray-traced reference, at the bundled relief (height_scale 1:
-slopes to about 60 degrees) and at half of it (to about 40 degrees).
-`cmfilter compare` gives the mean CIEDE2000. Writes WORK_DIR/snake-angles.csv
-and prints a Markdown table.
+both also with --slope-shading correlated and with that and --masking
+correlated, against the ray-traced reference, at the bundled relief
+(height_scale 1: slopes to about 60 degrees) and at half of it (to about 40
+degrees). `cmfilter compare` gives the mean CIEDE2000. Writes
+WORK_DIR/snake-angles.csv and prints a Markdown table.
 
-    python3 tests/bench/snake_angle_sweep.py BUILD_DIR WORK_DIR [--threads N] [--spp N]
+    python3 tests/bench/snake_angle_sweep.py BUILD_DIR WORK_DIR [--threads N] [--spp N] [--light THETA,AZIMUTH]
 """
 import argparse
 import csv
@@ -22,13 +24,16 @@ import subprocess
 
 ANGLES = [0, 20, 40, 60, 70, 80, 85]
 SCALES = [1.0, 0.5]
-# Each series: its name and its render options.
+# Each series: its name and its render options. The plain method names are
+# the paper's model (eqs. 13 and 19); render's defaults are "all-correlated".
 SERIES = {
     "naive": ["--method", "naive"],
-    "gaussian": ["--method", "gaussian"],
-    "exact": ["--method", "exact"],
-    "gaussian shading-correlated": ["--method", "gaussian", "--slope-shading", "correlated"],
-    "exact shading-correlated": ["--method", "exact", "--slope-shading", "correlated"],
+    "gaussian": ["--method", "gaussian", "--masking", "uncorrelated", "--slope-shading", "uncorrelated"],
+    "exact": ["--method", "exact", "--masking", "uncorrelated", "--slope-shading", "uncorrelated"],
+    "gaussian shading-correlated": ["--method", "gaussian", "--slope-shading", "correlated", "--masking", "uncorrelated"],
+    "exact shading-correlated": ["--method", "exact", "--slope-shading", "correlated", "--masking", "uncorrelated"],
+    "gaussian all-correlated": ["--method", "gaussian", "--slope-shading", "correlated", "--masking", "correlated"],
+    "exact all-correlated": ["--method", "exact", "--slope-shading", "correlated", "--masking", "correlated"],
 }
 METHODS = list(SERIES)
 SIZE = 16
@@ -36,8 +41,9 @@ FOV_DEGREES = 0.5
 FOOTPRINT = 2.0  # texture units (repeats) across a pixel
 
 
-def scene(root, angle, height_scale):
+def scene(root, angle, height_scale, light=(0.0, 0.0)):
     t = math.radians(angle)
+    lt, la = math.radians(light[0]), math.radians(light[1])
     view = [math.sin(t), math.cos(t), 0]
     distance = FOOTPRINT * SIZE / math.radians(FOV_DEGREES)
     material = {
@@ -47,7 +53,8 @@ def scene(root, angle, height_scale):
     return {
         "camera": {"position": [distance * c for c in view], "look_at": [0, 0, 0], "up": [0, 0, 1],
                    "fov_degrees": FOV_DEGREES, "resolution": [SIZE, SIZE]},
-        "light": {"direction": [0, 1, 0], "radiance": [1, 1, 1]},
+        "light": {"direction": [math.sin(lt) * math.cos(la), math.cos(lt), math.sin(lt) * math.sin(la)],
+                  "radiance": [1, 1, 1]},
         "background": [0, 0, 0],
         "surfaces": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0],
                       "mapping": {"type": "planar", "origin": [0, 0, 0], "u_axis": [1, 0, 0], "v_axis": [0, 0, 1]},
@@ -61,11 +68,13 @@ def main():
     parser.add_argument("work")
     parser.add_argument("--threads", type=int, default=2)
     parser.add_argument("--spp", type=int, default=4096)
+    parser.add_argument("--light", default="0,0", help="THETA,AZIMUTH in degrees (azimuth 0: the viewer's side)")
     args = parser.parse_args()
     root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
     cmfilter = os.path.join(args.build, "tools", "cmfilter")
     os.makedirs(args.work, exist_ok=True)
     scene_path = os.path.join(args.work, "snake-patch.json")
+    light = tuple(float(x) for x in args.light.split(","))
 
     def render(options, output):
         subprocess.run([cmfilter, "render", scene_path, *options, "-o", output, "--threads", str(args.threads), "-q"],
@@ -79,7 +88,7 @@ def main():
     for scale in SCALES:
         for angle in ANGLES:
             with open(scene_path, "w") as f:
-                json.dump(scene(root, angle, scale), f)
+                json.dump(scene(root, angle, scale, light), f)
             reference = os.path.join(args.work, "reference.exr")
             render(["--method", "reference", "--spp", str(args.spp)], reference)
             row = {"height_scale": scale, "angle": angle}
