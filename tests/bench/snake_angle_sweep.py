@@ -21,20 +21,18 @@ import json
 import math
 import os
 import subprocess
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import microsurface_angle_sweep as sweep  # noqa: E402
 
 ANGLES = [0, 20, 40, 60, 70, 80, 85]
 SCALES = [1.0, 0.5]
-# Each series: its name and its render options. The plain method names are
-# the paper's model (eqs. 13 and 19); render's defaults are "all-correlated".
-SERIES = {
-    "naive": ["--method", "naive"],
-    "gaussian": ["--method", "gaussian", "--masking", "uncorrelated", "--slope-shading", "uncorrelated"],
-    "exact": ["--method", "exact", "--masking", "uncorrelated", "--slope-shading", "uncorrelated"],
-    "gaussian shading-correlated": ["--method", "gaussian", "--slope-shading", "correlated", "--masking", "uncorrelated"],
-    "exact shading-correlated": ["--method", "exact", "--slope-shading", "correlated", "--masking", "uncorrelated"],
-    "gaussian all-correlated": ["--method", "gaussian", "--slope-shading", "correlated", "--masking", "correlated"],
-    "exact all-correlated": ["--method", "exact", "--slope-shading", "correlated", "--masking", "correlated"],
-}
+# The series of microsurface_angle_sweep.py (the plain method names are the
+# paper's model, eqs. 13 and 19; render's defaults are "all-correlated").
+SERIES = {name: sweep.SERIES[name] for name in [
+    "naive", "gaussian", "exact", "gaussian shading-correlated", "exact shading-correlated",
+    "gaussian all-correlated", "exact all-correlated"]}
 METHODS = list(SERIES)
 SIZE = 16
 FOV_DEGREES = 0.5
