@@ -186,24 +186,7 @@ Expected<DisplacementTexture> DisplacementTexture::from_texels(std::vector<float
     }
     // The surface's own moments over each texel's square, and their
     // summed-area table, each channel centred on its mean.
-    const std::vector<double> cells = cell_moments(data->h, data->sx, data->sy, n, data->reference);
-    for (std::size_t i = 0; i < count; ++i)
-        for (int c = 0; c < kChannels; ++c) data->centre[c] += cells[i * kChannels + c];
-    for (double& c : data->centre) c /= static_cast<double>(count);
-    const std::size_t stride = static_cast<std::size_t>(n) + 1;
-    data->table.assign(stride * stride * kChannels, 0.0);
-    for (int y = 0; y < n; ++y) {
-        double run[kChannels] = {};
-        for (int x = 0; x < n; ++x) {
-            const double* values = cells.data() + (static_cast<std::size_t>(y) * n + x) * kChannels;
-            double* below = data->table.data() + ((y + 1) * stride + x + 1) * kChannels;
-            const double* above = below - stride * kChannels;
-            for (int c = 0; c < kChannels; ++c) {
-                run[c] += values[c] - data->centre[c];
-                below[c] = above[c] + run[c];
-            }
-        }
-    }
+    data->table = PeriodicSummedArea(cell_moments(data->h, data->sx, data->sy, n, data->reference), n, kChannels);
     data->masking = DisplacementMasking::from_texels(data->h, data->sx, data->sy, n);
     return DisplacementTexture(std::move(data));
 }
@@ -250,43 +233,6 @@ std::array<double, kChannels> DisplacementTexture::pyramid_texel(int k, int x, i
     return out;
 }
 
-namespace {
-
-// The summed-area table at (x, y), 0 <= x, y <= n (texels), channel by
-// channel: the integral of the piecewise-constant texels over [0, x] x [0,
-// y], bilinear between its integer corners (exact: within a texel the
-// integral is linear in x and in y).
-void table_at(const std::vector<double>& table, int n, double x, double y, double* out)
-{
-    const int i = std::min(static_cast<int>(x), n - 1), j = std::min(static_cast<int>(y), n - 1);
-    const double a = x - i, b = y - j;
-    const std::size_t stride = static_cast<std::size_t>(n) + 1;
-    const double* s00 = table.data() + (j * stride + i) * kChannels;
-    const double* s10 = s00 + kChannels;
-    const double* s01 = s00 + stride * kChannels;
-    const double* s11 = s01 + kChannels;
-    for (int c = 0; c < kChannels; ++c)
-        out[c] = (1 - b) * ((1 - a) * s00[c] + a * s10[c]) + b * ((1 - a) * s01[c] + a * s11[c]);
-}
-
-// The integral of the periodic texels over [0, X] x [0, Y] (texels, any
-// reals, signed): with X = qx n + rx, Y = qy n + ry,
-//     qx qy S(n, n) + qx S(n, ry) + qy S(rx, n) + S(rx, ry).
-// The channels are centred (S(n, n) = 0 up to rounding, left out), so whole
-// repeats add nothing and far boxes keep their precision.
-void periodic_integral(const std::vector<double>& table, int n, double X, double Y, double* out)
-{
-    const double qx = std::floor(X / n), qy = std::floor(Y / n);
-    const double rx = std::clamp(X - qx * n, 0.0, double(n)), ry = std::clamp(Y - qy * n, 0.0, double(n));
-    double corner[kChannels], column[kChannels], row[kChannels];
-    table_at(table, n, rx, ry, corner);
-    table_at(table, n, n, ry, row);
-    table_at(table, n, rx, n, column);
-    for (int c = 0; c < kChannels; ++c) out[c] = corner[c] + qx * row[c] + qy * column[c];
-}
-
-}  // namespace
-
 DisplacementFootprint DisplacementTexture::footprint(double u, double v, double e1u, double e1v, double e2u,
                                                      double e2v) const
 {
@@ -303,7 +249,7 @@ DisplacementFootprint DisplacementTexture::footprint(double u, double v, double 
     // Between the linearised fields (0) and the box means (1).
     const double box_weight = std::clamp(lod - kLinearLod, 0.0, 1.0);
     Moments total{};
-    if (infinite) total = d.centre;  // the whole texture's means
+    if (infinite) std::copy(d.table.means().begin(), d.table.means().end(), total.begin());  // the whole texture's means
     for (int j = 0; j < (infinite ? 0 : probes.count); ++j) {
         const double offset = (j + 0.5) / probes.count - 0.5;
         const double cu = u + offset * probes.step_u, cv = v + offset * probes.step_v;
@@ -314,13 +260,7 @@ DisplacementFootprint DisplacementTexture::footprint(double u, double v, double 
             const double wu = std::max(kThinnest, std::hypot(au, bu) * n);
             const double wv = std::max(kThinnest, std::hypot(av, bv) * n);
             const double x0 = (cu - std::floor(cu)) * n - 0.5 * wu, y0 = (cv - std::floor(cv)) * n - 0.5 * wv;
-            double f00[kChannels], f10[kChannels], f01[kChannels], f11[kChannels];
-            periodic_integral(d.table, n, x0, y0, f00);
-            periodic_integral(d.table, n, x0 + wu, y0, f10);
-            periodic_integral(d.table, n, x0, y0 + wv, f01);
-            periodic_integral(d.table, n, x0 + wu, y0 + wv, f11);
-            for (int ch = 0; ch < kChannels; ++ch)
-                m[ch] = (f11[ch] - f10[ch] - f01[ch] + f00[ch]) / (wu * wv) + d.centre[ch];
+            d.table.box_mean(x0, y0, wu, wv, m.data());
         }
         if (box_weight < 1) {
             // The linearised fields: means at the centre, covariances (eq. of

@@ -88,6 +88,7 @@
 #include "cmfilter/driver_image.h"
 #include "cmfilter/error.h"
 #include "cmfilter/heightfield_tracer.h"
+#include "cmfilter/periodic_summed_area.h"
 
 #include <array>
 #include <memory>
@@ -169,8 +170,7 @@ private:
         double reference = 0;             // mean height, subtracted in the pyramid
         std::vector<double> h, sx, sy;    // level 0, N x N, row-major
         std::vector<std::vector<float>> levels;  // kChannels interleaved; h about `reference`
-        std::array<double, kChannels> centre{};  // each channel's mean over the surface
-        std::vector<double> table;  // of the texel squares' moments, (N + 1)^2 x kChannels, about `centre`
+        PeriodicSummedArea table;  // of the texel squares' moments, kChannels
         DisplacementMasking masking;
     };
     explicit DisplacementTexture(std::shared_ptr<const Data> data) : data_(std::move(data)) {}
