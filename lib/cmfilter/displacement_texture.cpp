@@ -188,6 +188,13 @@ Expected<DisplacementTexture> DisplacementTexture::from_texels(std::vector<float
     // summed-area table, each channel centred on its mean.
     data->table = PeriodicSummedArea(cell_moments(data->h, data->sx, data->sy, n, data->reference), n, kChannels);
     data->masking = DisplacementMasking::from_texels(data->h, data->sx, data->sy, n);
+    const DisplacementTexture surface(data);  // its height() and slope(), for the masked table
+    data->masked = MaskedSlopeTable::build(
+        [&](double u, double v, double& h, double& sx, double& sy) {
+            h = surface.height(u, v);
+            surface.slope(u, v, sx, sy);
+        },
+        n, data->masking);
     return DisplacementTexture(std::move(data));
 }
 
@@ -297,6 +304,57 @@ DisplacementFootprint DisplacementTexture::footprint(double u, double v, double 
     out.slope_yy = std::max(0.0, total[kSlopeYY] - out.slope_y * out.slope_y);
     const double bound = std::sqrt(out.slope_xx * out.slope_yy);
     out.slope_xy = std::clamp(total[kSlopeXY] - out.slope_x * out.slope_y, -bound, bound);
+    return out;
+}
+
+MaskedFootprint DisplacementTexture::masked_footprint(double u, double v, double e1u, double e1v, double e2u,
+                                                     double e2v, double lambda) const
+{
+    const Data& d = *data_;
+    const DisplacementFootprint plain = footprint(u, v, e1u, e1v, e2u, e2v);
+    MaskedFootprint out{1, plain.slope_x, plain.slope_y, plain.slope_xx, plain.slope_xy, plain.slope_yy};
+    if (!(lambda > 0)) return out;
+    const int m = d.masked.cells();
+    // Below a cell of the table: the footprint's own slopes, seen alike, and
+    // G1 of its mean height.
+    const double small_g1 = std::pow(d.masking.height_cdf(plain.mean_height), lambda);
+    const double table_weight = std::clamp(plain.lod - std::log2(static_cast<double>(d.n) / m), 0.0, 1.0);
+    if (table_weight <= 0 || m == 0) {
+        out.g1 = small_g1;
+        return out;
+    }
+    // The pieces' box means, as footprint() cuts them.
+    MaskedMoments total{};
+    if (plain.lod >= kInfiniteLod) {
+        total = d.masked.repeat(lambda);
+    } else {
+        if (!std::isfinite(u) || !std::isfinite(v)) u = v = 0;
+        const FootprintProbes probes = footprint_probes(e1u, e1v, e2u, e2v, d.max_probes, FootprintWidth::Rms);
+        const double au = probes.step_u / probes.count, av = probes.step_v / probes.count;
+        const double bu = probes.minor_u, bv = probes.minor_v;
+        const double wu = std::max(kThinnest / d.n, std::hypot(au, bu));
+        const double wv = std::max(kThinnest / d.n, std::hypot(av, bv));
+        for (int j = 0; j < probes.count; ++j) {
+            const double offset = (j + 0.5) / probes.count - 0.5;
+            const double cu = u + offset * probes.step_u, cv = v + offset * probes.step_v;
+            const MaskedMoments piece = d.masked.box(cu - 0.5 * wu, cv - 0.5 * wv, wu, wv, lambda);
+            for (int k = 0; k < 6; ++k) total[k] += piece[k] / probes.count;
+        }
+    }
+    // Blend the normalised moments; the weight itself linearly.
+    const double w = total[0];
+    out.g1 = table_weight * w + (1 - table_weight) * small_g1;
+    if (!(w > 0)) return out;  // nothing seen: the plain slopes
+    const double mx = total[1] / w, my = total[2] / w;
+    const double raw_xx = table_weight * total[3] / w + (1 - table_weight) * (plain.slope_xx + plain.slope_x * plain.slope_x);
+    const double raw_yy = table_weight * total[4] / w + (1 - table_weight) * (plain.slope_yy + plain.slope_y * plain.slope_y);
+    const double raw_xy = table_weight * total[5] / w + (1 - table_weight) * (plain.slope_xy + plain.slope_x * plain.slope_y);
+    out.slope_x = table_weight * mx + (1 - table_weight) * plain.slope_x;
+    out.slope_y = table_weight * my + (1 - table_weight) * plain.slope_y;
+    out.slope_xx = std::max(0.0, raw_xx - out.slope_x * out.slope_x);
+    out.slope_yy = std::max(0.0, raw_yy - out.slope_y * out.slope_y);
+    const double bound = std::sqrt(out.slope_xx * out.slope_yy);
+    out.slope_xy = std::clamp(raw_xy - out.slope_x * out.slope_y, -bound, bound);
     return out;
 }
 

@@ -88,6 +88,7 @@
 #include "cmfilter/driver_image.h"
 #include "cmfilter/error.h"
 #include "cmfilter/heightfield_tracer.h"
+#include "cmfilter/masked_slope_table.h"
 #include "cmfilter/periodic_summed_area.h"
 
 #include <array>
@@ -114,6 +115,15 @@ struct DisplacementFootprint {
     double slope_x = 0, slope_y = 0;                 // resolved: E[s]
     double slope_xx = 0, slope_xy = 0, slope_yy = 0; // unresolved: E[s s^T] - E[s] E[s]^T
     double lod = 0;  // log2 of the probes' width in texels, >= -64 (a point); 1e9 for infinite edges
+};
+
+// The slopes over a footprint weighted by Smith's G1 = F(h)^Lambda from each
+// point's height (masked_slope_table.h): the mean of G1 and the weighted
+// slope mean and covariance.
+struct MaskedFootprint {
+    double g1 = 1;
+    double slope_x = 0, slope_y = 0;
+    double slope_xx = 0, slope_xy = 0, slope_yy = 0;
 };
 
 // The pyramid's channels, in maketx --bumpslopes's order, then h^2.
@@ -160,6 +170,13 @@ public:
 
     // Smith's masking from the texels' own heights and slopes.
     const DisplacementMasking& masking() const { return data_->masking; }
+    // The footprint's slopes weighted by G1 for this Lambda (0: footprint()'s
+    // slopes, g1 = 1): the masked table's box means over each piece where
+    // the piece spans a cell of it or more, the footprint's own moments and
+    // G1 of its mean height below a cell, blended linearly in log2 of the
+    // width between.
+    MaskedFootprint masked_footprint(double u, double v, double e1u, double e1v, double e2u, double e2v,
+                                     double lambda) const;
 
 private:
     struct Data {
@@ -172,6 +189,7 @@ private:
         std::vector<std::vector<float>> levels;  // kChannels interleaved; h about `reference`
         PeriodicSummedArea table;  // of the texel squares' moments, kChannels
         DisplacementMasking masking;
+        MaskedSlopeTable masked;
     };
     explicit DisplacementTexture(std::shared_ptr<const Data> data) : data_(std::move(data)) {}
     std::shared_ptr<const Data> data_;

@@ -4,6 +4,7 @@
 #include "cmfilter/light_weighted_slope_map.h"
 #include "cmfilter/slope_colour.h"
 
+#include <algorithm>
 #include <type_traits>
 #include <variant>
 
@@ -13,10 +14,9 @@ namespace {
 
 // <C_s, D_s> (eq. 20) for the slopes N(resolved mean, unresolved covariance)
 // seen from the view.
-Rgb slope_layer(const SlopeMap& map, const MicrosurfaceFootprint& f, const ResolvedSlope& slope,
+Rgb slope_layer(const SlopeMap& map, const SlopeGaussian& slopes, const ResolvedSlope& slope,
                 const HeightDirections& d, const MicrosurfaceLayerOptions& options)
 {
-    const SlopeGaussian slopes{slope.x, slope.y, f.slope_xx, f.slope_xy, f.slope_yy};
     const ViewAngles view{d.theta_o, d.phi_o};
     // The mean of a (slope -> colour) function over D_s in the representation asked for.
     const auto over_ds = [&](const auto& m) -> Rgb {
@@ -57,6 +57,30 @@ DisplacementSlopeLayer sampled_displacement_layer(const SurfaceMaterial& m, cons
                       *m.slope_map);
 }
 
+// The Gaussian methods on a textured displacement: D_s fitted to the
+// footprint's slopes weighted by G1 = F(h)^Lambda_o (masked_slope_table.h),
+// and V = E[F^L] / E[F^Lambda_o], the share of what is seen that is lit
+// (eq. 13 for a uniform F), Lambda from the texture's own slopes.
+struct MaskedGaussian {
+    SlopeGaussian slopes;
+    double visibility = 1;
+};
+
+MaskedGaussian masked_gaussian(const DisplacementTexture& t, const HeightDirections& d,
+                               const MicrosurfaceLayerOptions& options, const FootprintPiece& p)
+{
+    const DisplacementMasking& masking = t.masking();
+    const double lambda_o = masking.lambda({d.theta_o, d.phi_o}), lambda_i = masking.lambda({d.theta_i, d.phi_i});
+    const double lambda_seen_lit = lambda_sum(lambda_o, lambda_i, d.phi_o - d.phi_i, options.masking);
+    const MaskedFootprint seen = t.masked_footprint(p.u, p.v, p.e1u, p.e1v, p.e2u, p.e2v, lambda_o);
+    const MaskedFootprint seen_lit = t.masked_footprint(p.u, p.v, p.e1u, p.e1v, p.e2u, p.e2v, lambda_seen_lit);
+    MaskedGaussian out;
+    out.slopes = {seen.slope_x, seen.slope_y, seen.slope_xx, seen.slope_xy, seen.slope_yy};
+    out.visibility = seen.g1 > 0 ? std::clamp(seen_lit.g1 / seen.g1, 0.0, 1.0)
+                                 : mean_visibility(lambda_o, lambda_i, d.phi_o - d.phi_i, options.masking);
+    return out;
+}
+
 Rgb times(const Rgb& a, const Rgb& b) { return {a.r * b.r, a.g * b.g, a.b * b.b}; }
 
 }  // namespace
@@ -82,8 +106,13 @@ MicrosurfaceLayers microsurface_layers(const SurfaceMaterial& m, const Microsurf
         const DisplacementSlopeLayer sampled = sampled_displacement_layer(m, d, options, *piece);
         out.visibility = sampled.visibility;
         if (m.slope_map) slope_colour = sampled.colour;
+    } else if (options.slopes == SlopeRepresentation::Gaussian && m.displacement && piece) {
+        const MaskedGaussian masked = masked_gaussian(*m.displacement, d, options, *piece);
+        out.visibility = masked.visibility;
+        if (m.slope_map) slope_colour = slope_layer(*m.slope_map, masked.slopes, slope, d, options);
     } else if (m.slope_map) {
-        slope_colour = slope_layer(*m.slope_map, f, slope, d, options);
+        const SlopeGaussian slopes{slope.x, slope.y, f.slope_xx, f.slope_xy, f.slope_yy};
+        slope_colour = slope_layer(*m.slope_map, slopes, slope, d, options);
     }
     const ColourCombination& c = m.combine;
     Rgb layers;
