@@ -3,14 +3,16 @@
 //   height  C_h, V <C_h, D_h> (eq. 14; height_filtered_albedo.h);
 //   slope   C_s, V <C_s, D_s> (eqs. 19-20; slope_colour.h): D_s for the
 //           unresolved slope covariance about the resolved mean slope, seen
-//           from the view direction (exact on a textured displacement: its
-//           own slopes, displacement_slope_colour.h);
+//           from the view direction (on a textured displacement, its slopes
+//           weighted by Smith's masking from their heights: exact from
+//           samples, displacement_slope_colour.h; the Gaussian methods from
+//           the moment tables of masked_slope_table.h);
 //   base    C0 over a driver that ignores the microsurface, V C0-bar, its
 //           driver filtered as a plain material's (sec. 4).
 // V is eq. 13's mean visibility times the resolved heights' shadowing V_r
-// (height_filtered_albedo.h), shared by every layer (exact on a textured
-// displacement: Smith's from the sampled heights and slopes,
-// displacement_slope_colour.h). Eq. 19 also takes the
+// (height_filtered_albedo.h), shared by every layer (on a textured
+// displacement, Smith's from the texture's heights and slopes, sampled or
+// tabulated as its slopes are). Eq. 19 also takes the
 // BRDF's mean rho-bar out of the colour, assuming C_s and rho uncorrelated;
 // here, as for heights, rho-bar is the renderer's shading of the mean
 // plane, so what this gives is an albedo.
@@ -66,10 +68,11 @@ struct MicrosurfaceLayers {
 
 // `slope` is the resolved mean slope over the probe (needed with a slope
 // map; ignored otherwise). `table` serves HeightRepresentation::ExactMoments.
-// On a textured displacement, SlopeRepresentation::Exact takes D_s and V from
-// the texture's own slopes and heights over `piece`
-// (displacement_slope_colour.h; without a piece, from the Gaussian of the
-// footprint's moments as elsewhere).
+// On a textured displacement with a `piece`, SlopeRepresentation::Exact takes
+// D_s and V from the texture's own slopes and heights sampled over it
+// (displacement_slope_colour.h), and Gaussian from its masked moment tables
+// (DisplacementTexture::masked_footprint); without a piece, the Gaussian of
+// the footprint's moments as elsewhere.
 MicrosurfaceLayers microsurface_layers(const SurfaceMaterial& material, const MicrosurfaceFootprint& footprint,
                                        const ResolvedSlope& slope, const HeightDirections& directions,
                                        const MicrosurfaceLayerOptions& options, const HeightMomentTable& table,

@@ -303,9 +303,10 @@ TEST_CASE("masked slope moments are the plain footprint's at Lambda 0 and a poin
     CHECK(point.slope_xx == doctest::Approx(0).scale(1e-9));
 }
 
-// At 80 degrees the Gaussian of the plain moments (eq. 20) was 5.2 mean
-// CIEDE2000 from the reference with the light overhead and 7.4 with it at 60
-// degrees; fitted to the G1-weighted moments, 1.2 and 0.8.
+// At 80 degrees the Gaussian of the plain moments (eq. 20, the shading
+// correlated) was 5.2 mean CIEDE2000 from the reference with the light
+// overhead and 2.4 with it at 60 degrees; fitted to the G1-weighted moments,
+// 1.2 and 0.8.
 TEST_CASE("the gaussian slope layer of the far half-relief snake at 80 degrees matches the ray-traced reference")
 {
     for (const double light : {0.0, 60.0}) {
