@@ -4,10 +4,13 @@
 // unresolved slope covariances from 0 to 1e3 (degenerate and strongly
 // anisotropic ones too), resolved slopes up to 1e3, for a slope map alone,
 // a weighted sum and a product of heights and slopes, in every
-// representation render uses. Every channel of V x layers must lie in V
+// representation render uses; and on textured displacements (flat, scales,
+// steep steps) from a point footprint to an infinite one, with the shading
+// and the masking correlated or not. Every channel of V x layers must lie in V
 // times the layers' range: for a sum, the weighted sum of the maps'
 // per-channel ranges; for a product, the product of the ranges; and V in
 // [0, 1].
+#include "cmfilter/displacement_texture.h"
 #include "cmfilter/height_moment_table.h"
 #include "cmfilter/microsurface_albedo.h"
 
@@ -18,6 +21,7 @@
 
 #include <algorithm>
 #include <iterator>
+#include <limits>
 #include <utility>
 #include <cmath>
 #include <string>
@@ -278,4 +282,100 @@ TEST_CASE("the base layer combined with any probe's layers stays finite and in r
             }
         }
     }
+}
+
+namespace {
+
+// Displacements: the bundled snake's scales, a flat image and a 4 x 4 one of
+// steep random steps.
+std::vector<std::pair<std::string, DisplacementTexture>> displacements()
+{
+    std::vector<std::pair<std::string, DisplacementTexture>> out;
+    DisplacementOptions o;
+    o.path = std::string(CMFILTER_SOURCE_DIR) + "/examples/scenes/snake-scales.exr";
+    auto snake = DisplacementTexture::load(o);
+    REQUIRE(snake);
+    out.push_back({"snake", *snake});
+    o.path = "flat";
+    auto flat = DisplacementTexture::from_texels(std::vector<float>(16, 0.25f), 4, 4, o);
+    REQUIRE(flat);
+    out.push_back({"flat", *flat});
+    o.path = "steps";
+    o.height_scale = 3;
+    auto steps = DisplacementTexture::from_texels({0.1f, 0.9f, 0.0f, 0.4f, 0.7f, 0.2f, 1.0f, 0.3f, 0.0f, 0.5f, 0.6f,
+                                                   0.95f, 0.35f, 0.05f, 0.8f, 0.15f},
+                                                  4, 4, o);
+    REQUIRE(steps);
+    out.push_back({"steps", *steps});
+    return out;
+}
+
+}  // namespace
+
+// Every representation render uses on a displacement, with the shading and
+// masking correlated or not, over pieces from a point to infinite, at
+// ordinary and far-off positions, on every view and light angle: V in [0, 1],
+// V x the slope layer in V times the map's range, everything finite.
+TEST_CASE("displacement layers stay finite and in range on every angle, footprint and correlation")
+{
+    const HeightMomentTable table = *HeightMomentTable::create();
+    const double inf = std::numeric_limits<double>::infinity();
+    const FootprintPiece pieces[] = {{0.3, 0.6, 0, 0, 0, 0},       {0.3, 0.6, 0.004, 0, 0, 0.002},
+                                     {0.3, 0.6, 0.2, 0.05, -0.01, 0.03}, {0.5, 0.5, 1, 0, 0, 1},
+                                     {1e5, -3e4, 2.5, 1, 0, 0.01},  {0.1, 0.2, 1e3, 0, 0, 1e3},
+                                     {0.1, 0.2, inf, 0, 0, inf}};
+    AlbedoCounts counts;
+    int checked = 0, failures = 0;
+    for (const auto& [name, texture] : displacements())
+        for (const SlopeMap& map : {SlopeMap{steepness_map()}, SlopeMap{vector_map()}}) {
+            SurfaceMaterial m;
+            m.displacement = texture;
+            m.slope_map = map;
+            const ColourRange range = slope_range(map);
+            for (const Representation& r : {kNaive, kGaussian, kGaussianExact, kExact})
+                for (const SlopeShading shading : {SlopeShading::Uncorrelated, SlopeShading::Correlated})
+                    for (const MaskingShadowing masking :
+                         {MaskingShadowing::Uncorrelated, MaskingShadowing::DirectionCorrelated}) {
+                        MicrosurfaceLayerOptions options;
+                        options.heights = r.heights;
+                        options.slopes = r.slopes;
+                        options.slope_shading = shading;
+                        options.masking = masking;
+                        for (const FootprintPiece& p : pieces) {
+                            const DisplacementFootprint d = texture.footprint(p.u, p.v, p.e1u, p.e1v, p.e2u, p.e2v);
+                            MicrosurfaceFootprint f;
+                            f.mean_height = d.mean_height;
+                            f.sigma_h = d.sigma_h;
+                            f.slope_xx = d.slope_xx;
+                            f.slope_xy = d.slope_xy;
+                            f.slope_yy = d.slope_yy;
+                            // The exact method samples 4096 points per piece: fewer directions for it.
+                            for (const Directions& dir : directions(r.slopes != SlopeRepresentation::Exact)) {
+                                const HeightDirections hd{degrees(dir.theta_o), dir.phi_o, degrees(dir.theta_i),
+                                                          dir.phi_i};
+                                const MicrosurfaceLayers a = microsurface_layers(
+                                    m, f, ResolvedSlope{d.slope_x, d.slope_y}, hd, options, table, counts, &p);
+                                ++checked;
+                                const bool ok = std::isfinite(a.visibility) && a.visibility >= 0 &&
+                                                a.visibility <= 1 && is_finite(a.shadowed) &&
+                                                within_scaled_range(a.shadowed, range, a.visibility, 1e-6);
+                                if (!ok && ++failures <= 5) {
+                                    CAPTURE(name);
+                                    CAPTURE(r.name);
+                                    CAPTURE(static_cast<int>(shading));
+                                    CAPTURE(static_cast<int>(masking));
+                                    CAPTURE(p.u);
+                                    CAPTURE(p.e1u);
+                                    CAPTURE(dir.theta_o);
+                                    CAPTURE(dir.theta_i);
+                                    CAPTURE(a.visibility);
+                                    CAPTURE(a.shadowed.r);
+                                    CHECK(ok);
+                                }
+                            }
+                        }
+                    }
+        }
+    CHECK(failures == 0);
+    CHECK(checked > 10000);
 }
