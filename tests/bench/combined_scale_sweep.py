@@ -131,7 +131,7 @@ def main():
                 f'set output "{work}/combined-scales.png"\n'
                 f'set multiplot layout 1,2 title "{os.path.basename(args.scene)}, view at '
                 f'{args.view:g} degrees: mean CIEDE2000 against the ray-traced heightfield"\n'
-                'set grid\nset logscale x\nset logscale y\nset yrange [0.01:100]\n'
+                'set grid\nset logscale x\nset logscale y\nset yrange [0.01:1000]\n'
                 'set key top right samplen 2\nset ylabel "mean CIEDE2000"\n'
                 'set xlabel "pixel width (texture units)"\n'
                 'set arrow 4 from graph 0, first 2 to graph 1, first 2 nohead dt 2 lc rgb "black"\n')
