@@ -25,7 +25,11 @@ DisplacementSlopeLayer displacement_slope_layer(const DisplacementTexture& textu
     const double u = finite_or_zero(piece.u), v = finite_or_zero(piece.v);
     const double e1u = finite_or_zero(piece.e1u), e1v = finite_or_zero(piece.e1v);
     const double e2u = finite_or_zero(piece.e2u), e2v = finite_or_zero(piece.e2v);
-    const int n = std::max(1, options.samples);
+    const double texels = std::abs(e1u * e2v - e1v * e2u) * texture.size() * texture.size();
+    const int most = std::max(1, options.max_samples), least = std::clamp(options.min_samples, 1, most);
+    const int n = texels * options.samples_per_texel >= most
+                      ? most
+                      : std::max(least, static_cast<int>(std::ceil(texels * options.samples_per_texel)));
     Rgb colour_sum, seen_colour_sum, plain;
     double seen_sum = 0, seen_lit_sum = 0, seen_area_sum = 0;  // weights as the colour takes them (times lambda_k when correlated)
     for (int k = 0; k < n; ++k) {

@@ -25,7 +25,8 @@
 // constant over the footprint (a flat surface, or theta = 0) give back eq. 20
 // and eq. 13's V for these slopes.
 //
-// The samples lie on a rank-2 Kronecker (golden-ratio) lattice over the
+// The samples, 16 per texel the footprint covers (at least 64, at most 4096),
+// lie on a rank-2 Kronecker (golden-ratio) lattice over the
 // parallelogram, c + (a_k - 1/2) e1 + (b_k - 1/2) e2 with (a_k, b_k) =
 // frac((k + 1/2) (alpha1, alpha2)), alpha the plastic-number lattice: no
 // period of the texture is commensurate with it, so a footprint of many
@@ -49,7 +50,12 @@ struct FootprintPiece {
 };
 
 struct DisplacementSlopeColourOptions {
-    int samples = 4096;  // >= 1
+    // Points per footprint: samples_per_texel per texel the parallelogram
+    // covers, within [min_samples, max_samples] (a point footprint takes
+    // min_samples of the same point).
+    int max_samples = 4096;      // >= 1
+    int min_samples = 64;        // >= 1
+    double samples_per_texel = 16;
     MaskingShadowing masking = MaskingShadowing::Uncorrelated;
     SlopeShading shading = SlopeShading::Uncorrelated;
 };
