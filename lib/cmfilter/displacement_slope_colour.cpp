@@ -23,8 +23,12 @@ DisplacementSlopeLayer displacement_slope_layer(const DisplacementTexture& textu
 
     const auto finite_or_zero = [](double x) { return std::isfinite(x) ? x : 0.0; };
     const double u = finite_or_zero(piece.u), v = finite_or_zero(piece.v);
-    const double e1u = finite_or_zero(piece.e1u), e1v = finite_or_zero(piece.e1v);
-    const double e2u = finite_or_zero(piece.e2u), e2v = finite_or_zero(piece.e2v);
+    // Non-finite edges read as an infinite footprint: one whole repeat, as
+    // DisplacementTexture::footprint reads them.
+    const bool infinite = !std::isfinite(piece.e1u) || !std::isfinite(piece.e1v) || !std::isfinite(piece.e2u) ||
+                          !std::isfinite(piece.e2v);
+    const double e1u = infinite ? 1.0 : piece.e1u, e1v = infinite ? 0.0 : piece.e1v;
+    const double e2u = infinite ? 0.0 : piece.e2u, e2v = infinite ? 1.0 : piece.e2v;
     const double texels = std::abs(e1u * e2v - e1v * e2u) * texture.size() * texture.size();
     const int most = std::max(1, options.max_samples), least = std::clamp(options.min_samples, 1, most);
     const int n = texels * options.samples_per_texel >= most

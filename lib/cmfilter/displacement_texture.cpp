@@ -341,10 +341,17 @@ MaskedFootprint DisplacementTexture::masked_footprint(double u, double v, double
             for (int k = 0; k < 6; ++k) total[k] += piece[k] / probes.count;
         }
     }
-    // Blend the normalised moments; the weight itself linearly.
+    // Blend the normalised moments; the weight itself linearly. A box's
+    // weight is a difference of sums over the repeat: below a millionth of
+    // the repeat's mean weight it is rounding (a footprint of a cell or two
+    // on low ground at a grazing angle), and the point's own G1 and slopes
+    // stand.
     const double w = total[0];
+    if (!(w > 1e-6 * d.masked.repeat(lambda)[0])) {
+        out.g1 = small_g1;
+        return out;
+    }
     out.g1 = table_weight * w + (1 - table_weight) * small_g1;
-    if (!(w > 0)) return out;  // nothing seen: the plain slopes
     const double mx = total[1] / w, my = total[2] / w;
     const double raw_xx = table_weight * total[3] / w + (1 - table_weight) * (plain.slope_xx + plain.slope_x * plain.slope_x);
     const double raw_yy = table_weight * total[4] / w + (1 - table_weight) * (plain.slope_yy + plain.slope_y * plain.slope_y);

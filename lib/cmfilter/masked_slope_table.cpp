@@ -1,6 +1,7 @@
 #include "cmfilter/masked_slope_table.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -21,9 +22,9 @@ MaskedSlopeTable MaskedSlopeTable::build(
 {
     MaskedSlopeTable out;
     if (n < 1) return out;
-    int m = n;  // cells per side
-    while (m > kMaxCells && m % 2 == 0) m /= 2;
-    const int points = std::max(1, 2 * n / m);  // per cell and axis: 2 per texel
+    const int m = std::min(n, kMaxCells);  // cells per side
+    // Per cell and axis: 2 points per texel, at most kMaxPoints.
+    const int points = std::clamp((2 * n + m - 1) / m, 1, kMaxPoints);
     const int channels = kLambdas * kChannelsPerLambda;
     std::vector<double> cells(static_cast<std::size_t>(m) * m * channels, 0.0);
     const double weight = 1.0 / (static_cast<double>(points) * points);
@@ -35,11 +36,13 @@ MaskedSlopeTable MaskedSlopeTable::build(
                     const double u = (cx + (px + 0.5) / points) / m, v = (cy + (py + 0.5) / points) / m;
                     double h = 0, sx = 0, sy = 0;
                     surface(u, v, h, sx, sy);
-                    const double f = masking.height_cdf(h);
                     const double values[kChannelsPerLambda] = {1, sx, sy, sx * sx, sy * sy, sx * sy};
+                    // G1 = F^Lambda (eq. 2): F^0, then F^(2^-5) squared up to F^(2^(kLambdas - 2 - 5)).
+                    double g = std::pow(masking.height_cdf(h), lambda_at(1));
                     for (int j = 0; j < kLambdas; ++j) {
-                        const double w = weight * std::pow(f, lambda_at(j));  // G1 (eq. 2)
+                        const double w = weight * (j == 0 ? 1.0 : g);
                         for (int k = 0; k < kChannelsPerLambda; ++k) c[j * kChannelsPerLambda + k] += w * values[k];
+                        if (j > 0) g *= g;
                     }
                 }
         }
@@ -74,14 +77,28 @@ MaskedMoments MaskedSlopeTable::blend(const double* channels, double lambda) con
     const double a = lambda_at(j), b = lambda_at(j + 1);
     const double s = std::clamp((lambda - a) / (b - a), 0.0, 1.0);
     out[0] = 1 / ((1 - s) / lo[0] + s / hi[0]);
-    for (int k = 1; k < kChannelsPerLambda; ++k) {
-        const double l = lo[k] / lo[0], h = hi[k] / hi[0];
-        // The mean squares geometrically (they shrink as a power of Lambda
-        // as G1 picks out the highest points), the rest linearly.
-        const bool square = k == 3 || k == 4;
-        out[k] = out[0] * (square && l > 0 && h > 0 ? std::exp((1 - t) * std::log(l) + t * std::log(h))
-                                                     : (1 - t) * l + t * h);
-    }
+    // Means linearly, variances geometrically (they shrink as a power of
+    // Lambda as G1 picks out the highest points), the covariance's
+    // correlation linearly: a positive semi-definite result from two.
+    const auto lerp = [t](double x, double y) { return (1 - t) * x + t * y; };
+    const auto central = [](const double* c) {
+        const double mx = c[1] / c[0], my = c[2] / c[0];
+        const double xx = std::max(0.0, c[3] / c[0] - mx * mx), yy = std::max(0.0, c[4] / c[0] - my * my);
+        const double bound = std::sqrt(xx * yy);
+        return std::array<double, 5>{mx, my, xx, yy, bound > 0 ? std::clamp((c[5] / c[0] - mx * my) / bound, -1.0, 1.0) : 0.0};
+    };
+    const std::array<double, 5> l = central(lo), h = central(hi);
+    const auto geometric = [&](double x, double y) {
+        return x > 0 && y > 0 ? std::exp(lerp(std::log(x), std::log(y))) : lerp(x, y);
+    };
+    const double mx = lerp(l[0], h[0]), my = lerp(l[1], h[1]);
+    const double xx = geometric(l[2], h[2]), yy = geometric(l[3], h[3]);
+    const double xy = lerp(l[4], h[4]) * std::sqrt(xx * yy);
+    out[1] = out[0] * mx;
+    out[2] = out[0] * my;
+    out[3] = out[0] * (xx + mx * mx);
+    out[4] = out[0] * (yy + my * my);
+    out[5] = out[0] * (xy + mx * my);
     return out;
 }
 

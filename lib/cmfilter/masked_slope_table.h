@@ -13,17 +13,20 @@
 // in a summed-area table (periodic_summed_area.h), so that any footprint's
 // weighted slope mean and covariance, and its mean G1, are four lookups per
 // Lambda: moment mipmaps of the masked slopes. Lambda = 0 gives the plain
-// moments. The set: 0 and 2^k for k = -5 .. 6. Between two of them the
+// moments. The set: 0 and 2^k for k = -5 .. 9. Between two of them the
 // weight's reciprocal is linear in Lambda (1 / E[F^Lambda] = 1 + Lambda for
-// a uniform F), the weighted mean squares are geometric and the other means
-// linear in log2 Lambda (linear in Lambda below 2^-5); against a dense grid
-// on the bundled snake that is within 0.2% for G1 and 3.3% for the slope
-// variances (unit tests). Beyond 64 the table holds 64's.
+// a uniform F); the weighted means are linear, the variances geometric and
+// the correlation linear in log2 Lambda (linear in Lambda below 2^-5), so
+// the covariance stays positive semi-definite. Against a dense grid on the
+// bundled snake that is within 0.2% for G1 and 3.3% for the slope variances
+// (unit tests). Beyond 512 (a view within a few hundredths of a degree of
+// the horizon) the table holds 512's.
 //
-// Each cell's means come from 2 x 2 points per texel of the bilinear surface
-// (a midpoint rule: G1 is not polynomial); the cells are texels up to 128 per
-// side and 2^k texels square beyond, so the table is at most
-// 129^2 x 78 doubles (10 MB) whatever the texture's size.
+// Each cell's means come from a midpoint rule over the bilinear surface (G1
+// is not polynomial): 2 points per texel and axis, at most 16 per cell and
+// axis. The cells are min(N, 128) per side whatever N (a cell need not be a
+// whole number of texels), so the table is at most 129^2 x 96 doubles
+// (13 MB) and built from at most 2048^2 surface points.
 #pragma once
 
 #include "cmfilter/displacement_masking.h"
@@ -39,8 +42,9 @@ using MaskedMoments = std::array<double, 6>;
 
 class MaskedSlopeTable {
 public:
-    static constexpr int kLambdas = 13;
+    static constexpr int kLambdas = 16;
     static constexpr int kMaxCells = 128;
+    static constexpr int kMaxPoints = 16;
 
     MaskedSlopeTable() = default;
     // surface(u, v, h, sx, sy): the height and slopes at (u, v) in [0, 1)^2;

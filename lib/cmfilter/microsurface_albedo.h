@@ -49,6 +49,8 @@ enum class SlopeRepresentation { Naive, Gaussian, Exact };
 struct MicrosurfaceLayerOptions {
     HeightRepresentation heights = HeightRepresentation::PaperFit;
     SlopeRepresentation slopes = SlopeRepresentation::Gaussian;
+    // The paper's forms (eqs. 13 and 19); render's defaults (RenderOptions)
+    // are the correlated ones.
     MaskingShadowing masking = MaskingShadowing::Uncorrelated;
     SlopeShading slope_shading = SlopeShading::Uncorrelated;
     int hermite_points = 12;  // GaussianSlopeColourOptions::points_per_axis
