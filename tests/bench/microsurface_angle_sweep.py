@@ -30,6 +30,11 @@ import json
 import math
 import os
 import subprocess
+import sys
+
+# absolute_paths: a material with its file paths made absolute, so it can be written elsewhere.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "cli"))
+from write_small_scene import absolute_paths  # noqa: E402
 
 # Each series: its name and its render options. The plain method names are
 # the paper's model (eqs. 13 and 19); render's defaults are "all-correlated".
@@ -69,20 +74,6 @@ TITLES = {"reference_repeat": "reference vs itself (other seed)"}
 def direction(theta_degrees, azimuth_degrees):
     t, a = math.radians(theta_degrees), math.radians(azimuth_degrees)
     return [math.sin(t) * math.cos(a), math.cos(t), math.sin(t) * math.sin(a)]
-
-
-PATH_KEYS = ("image", "table", "sigma_table", "moments")
-
-
-def absolute_paths(value, folder):
-    """The material with every path (PATH_KEYS) made absolute (relative ones
-    are relative to the scene's folder), so that it can be written elsewhere."""
-    if isinstance(value, dict):
-        return {k: (os.path.normpath(os.path.join(folder, v)) if k in PATH_KEYS and isinstance(v, str)
-                    else absolute_paths(v, folder)) for k, v in value.items()}
-    if isinstance(value, list):
-        return [absolute_paths(v, folder) for v in value]
-    return value
 
 
 def bundled_material(scene_path):
