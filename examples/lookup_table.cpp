@@ -2,7 +2,7 @@
 // mean and standard deviation over a footprint into a filtered colour with one
 // bilinear lookup (Heitz et al. 2013, eq. 10).
 //   lookup_table TABLE.exr MEAN SIGMA
-#include "cmfilter/gaussian_color_table_file.h"
+#include "cmfilter/tables/gaussian_color_table_file.h"
 
 #include <cstdlib>
 #include <iostream>

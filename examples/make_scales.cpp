@@ -16,7 +16,7 @@
 // (the program prints them), and a slope colour map shows a pattern that
 // changes with the view (Heitz et al. 2013, fig. 10, the snake). Distances
 // wrap, so the texture tiles.
-#include "cmfilter/displacement_texture.h"
+#include "cmfilter/microsurface/displacement_texture.h"
 
 #include <OpenImageIO/imageio.h>
 

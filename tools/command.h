@@ -5,8 +5,8 @@
 // and maps to the exit code of its kind (docs/exit-codes.md).
 #pragma once
 
-#include "cmfilter/color_config.h"
-#include "cmfilter/error.h"
+#include "cmfilter/color/color_config.h"
+#include "cmfilter/util/error.h"
 
 #include <CLI/CLI.hpp>
 

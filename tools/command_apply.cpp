@@ -4,10 +4,10 @@
 // mean of C0(f)); EXR in scene-linear, PNG/JPEG in sRGB.
 #include "command.h"
 
-#include "cmfilter/stopwatch.h"
+#include "cmfilter/util/stopwatch.h"
 
-#include "cmfilter/filtered_image.h"
-#include "cmfilter/filtered_image_file.h"
+#include "cmfilter/ops/filtered_image.h"
+#include "cmfilter/ops/filtered_image_file.h"
 
 #include <nlohmann/json.hpp>
 

@@ -4,12 +4,12 @@
 // the driver or scene the table is for.
 #include "command.h"
 
-#include "cmfilter/atomic_output.h"
-#include "cmfilter/color_map_loading.h"
-#include "cmfilter/driver_sigma_range.h"
-#include "cmfilter/gaussian_color_table_file.h"
-#include "cmfilter/table_lookup_error.h"
-#include "cmfilter/table_size_search.h"
+#include "cmfilter/util/atomic_output.h"
+#include "cmfilter/colormap/color_map_loading.h"
+#include "cmfilter/scene/driver_sigma_range.h"
+#include "cmfilter/tables/gaussian_color_table_file.h"
+#include "cmfilter/tables/table_lookup_error.h"
+#include "cmfilter/tables/table_size_search.h"
 
 #include <nlohmann/json.hpp>
 

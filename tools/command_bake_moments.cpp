@@ -3,11 +3,11 @@
 // MIP-mapped EXR that OpenImageIO's TextureSystem reads.
 #include "command.h"
 
-#include "cmfilter/stopwatch.h"
+#include "cmfilter/util/stopwatch.h"
 
-#include "cmfilter/atomic_output.h"
-#include "cmfilter/histogram_pyramid.h"
-#include "cmfilter/moment_pyramid.h"
+#include "cmfilter/util/atomic_output.h"
+#include "cmfilter/texture/histogram_pyramid.h"
+#include "cmfilter/texture/moment_pyramid.h"
 
 #include <nlohmann/json.hpp>
 

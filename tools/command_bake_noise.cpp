@@ -4,11 +4,11 @@
 // (docs/bake-noise.md).
 #include "command.h"
 
-#include "cmfilter/atomic_output.h"
-#include "cmfilter/noise_sigma_bake.h"
-#include "cmfilter/noise_sigma_table_file.h"
-#include "cmfilter/noise_spec.h"
-#include "cmfilter/stopwatch.h"
+#include "cmfilter/util/atomic_output.h"
+#include "cmfilter/noise/noise_sigma_bake.h"
+#include "cmfilter/noise/noise_sigma_table_file.h"
+#include "cmfilter/noise/noise_spec.h"
+#include "cmfilter/util/stopwatch.h"
 
 #include <nlohmann/json.hpp>
 

@@ -4,10 +4,10 @@
 // overall and per distance band; a CSV, and a log-log chart per scene.
 #include "command.h"
 
-#include "cmfilter/atomic_output.h"
-#include "cmfilter/bench_chart.h"
-#include "cmfilter/render_benchmark.h"
-#include "cmfilter/scene_loading.h"
+#include "cmfilter/util/atomic_output.h"
+#include "cmfilter/render/bench_chart.h"
+#include "cmfilter/render/render_benchmark.h"
+#include "cmfilter/scene/scene_loading.h"
 
 #include <cmath>
 #include <filesystem>

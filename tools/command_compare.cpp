@@ -2,7 +2,7 @@
 // the same size, both in scene-linear, with an optional per-pixel heat map.
 #include "command.h"
 
-#include "cmfilter/image_comparison.h"
+#include "cmfilter/ops/image_comparison.h"
 
 #include <nlohmann/json.hpp>
 

@@ -1,7 +1,7 @@
 // cmfilter info: what a cmfilter artefact is and every parameter it was baked with.
 #include "command.h"
 
-#include "cmfilter/artefact_info.h"
+#include "cmfilter/ops/artefact_info.h"
 
 #include <nlohmann/json.hpp>
 

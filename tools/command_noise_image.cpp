@@ -2,8 +2,8 @@
 // single-channel float EXR driver (docs/noise.md), for bake-moments and apply.
 #include "command.h"
 
-#include "cmfilter/atomic_output.h"
-#include "cmfilter/noise_image.h"
+#include "cmfilter/util/atomic_output.h"
+#include "cmfilter/noise/noise_image.h"
 
 #include <nlohmann/json.hpp>
 

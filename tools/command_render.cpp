@@ -3,11 +3,11 @@
 // with --aov the per-pixel filtered mean, sigma and LOD as float EXRs.
 #include "command.h"
 
-#include "cmfilter/render.h"
-#include "cmfilter/rgb_image_file.h"
-#include "cmfilter/scene_loading.h"
-#include "cmfilter/table_size_search.h"
-#include "cmfilter/version.h"
+#include "cmfilter/render/render.h"
+#include "cmfilter/io/rgb_image_file.h"
+#include "cmfilter/scene/scene_loading.h"
+#include "cmfilter/tables/table_size_search.h"
+#include "cmfilter/util/version.h"
 
 #include <nlohmann/json.hpp>
 

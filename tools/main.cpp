@@ -2,7 +2,7 @@
 // one subcommand, prints its error once and exits with the error's code.
 #include "command.h"
 
-#include "cmfilter/version.h"
+#include "cmfilter/util/version.h"
 
 #include <iostream>
 #include <vector>

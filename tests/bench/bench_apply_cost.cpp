@@ -16,10 +16,10 @@
 //   gaussian  MomentTexture::lookup, then T(mean, sigma)
 //
 //   cmfilter-bench-apply-cost LUTS_DIR
-#include "cmfilter/color_map_loading.h"
-#include "cmfilter/gaussian_color_table.h"
-#include "cmfilter/moment_pyramid.h"
-#include "cmfilter/moment_texture.h"
+#include "cmfilter/colormap/color_map_loading.h"
+#include "cmfilter/tables/gaussian_color_table.h"
+#include "cmfilter/texture/moment_pyramid.h"
+#include "cmfilter/texture/moment_texture.h"
 
 #include <OpenImageIO/imageio.h>
 

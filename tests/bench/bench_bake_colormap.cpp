@@ -5,9 +5,9 @@
 // by other work on the machine); the baseline (writing
 // the same table to EXR with cmfilter's own writer) runs in the same process,
 // so the ratio, not the milliseconds, is the figure to compare across machines.
-#include "cmfilter/color_map_loading.h"
-#include "cmfilter/gaussian_color_table_file.h"
-#include "cmfilter/table_lookup_error.h"
+#include "cmfilter/colormap/color_map_loading.h"
+#include "cmfilter/tables/gaussian_color_table_file.h"
+#include "cmfilter/tables/table_lookup_error.h"
 
 #include "bench_timing.h"
 

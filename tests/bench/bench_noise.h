@@ -2,7 +2,7 @@
 // none with the reason on stderr.
 #pragma once
 
-#include "cmfilter/noise_spec.h"
+#include "cmfilter/noise/noise_spec.h"
 
 #include <iostream>
 #include <optional>

@@ -12,10 +12,10 @@
 // per band of LOD. The sigma table's values do not change its cost: a table
 // of the right length with placeholder values is used.
 //   cmfilter-bench-noise-cost LUTS_DIR
-#include "cmfilter/color_map_loading.h"
-#include "cmfilter/filtered_noise.h"
-#include "cmfilter/gaussian_color_table.h"
-#include "cmfilter/noise_spec.h"
+#include "cmfilter/colormap/color_map_loading.h"
+#include "cmfilter/noise/filtered_noise.h"
+#include "cmfilter/tables/gaussian_color_table.h"
+#include "cmfilter/noise/noise_spec.h"
 
 #include "bench_noise.h"
 

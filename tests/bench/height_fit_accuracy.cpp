@@ -4,7 +4,7 @@
 // (docs/microsurface.md). Prints a markdown table at chosen L and the worst
 // differences over a log grid of L up to 10, 100 and 1e6.
 //   build/tests/bench/cmfilter-height-fit-accuracy
-#include "cmfilter/height_filtering.h"
+#include "cmfilter/microsurface/height_filtering.h"
 
 #include <algorithm>
 #include <cmath>

@@ -8,7 +8,7 @@
 // through the slab with bisection at the first sign change, and the shadow
 // ray marched likewise. Each time is the fastest of 5 runs.
 //   build/tests/bench/cmfilter-bench-heightfield-trace
-#include "cmfilter/heightfield_tracer.h"
+#include "cmfilter/microsurface/heightfield_tracer.h"
 
 #include "bench_timing.h"
 

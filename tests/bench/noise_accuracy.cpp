@@ -27,17 +27,17 @@
 //
 // (LABEL names the noise in the CSV, whose specs contain commas.)
 //   cmfilter-noise-accuracy LUTS_DIR LABEL NOISE_SPEC [P] [THREADS]
-#include "cmfilter/ciede2000.h"
-#include "cmfilter/color_map_loading.h"
-#include "cmfilter/error_summary.h"
-#include "cmfilter/filtered_noise.h"
-#include "cmfilter/gaussian_color_table.h"
-#include "cmfilter/noise_lattice.h"
-#include "cmfilter/noise_sigma_bake.h"
-#include "cmfilter/noise_spec.h"
+#include "cmfilter/color/ciede2000.h"
+#include "cmfilter/colormap/color_map_loading.h"
+#include "cmfilter/color/error_summary.h"
+#include "cmfilter/noise/filtered_noise.h"
+#include "cmfilter/tables/gaussian_color_table.h"
+#include "cmfilter/noise/noise_lattice.h"
+#include "cmfilter/noise/noise_sigma_bake.h"
+#include "cmfilter/noise/noise_spec.h"
 
 #include "bench_noise.h"
-#include "cmfilter/parallel_for.h"
+#include "cmfilter/util/parallel_for.h"
 
 #include <chrono>
 #include <cmath>

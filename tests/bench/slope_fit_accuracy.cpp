@@ -1,6 +1,6 @@
 // How far the slope-filtered colour <C_s, D_s> of eq. 20 computed with the
-// Gaussian of D_s's exact moments (gaussian_slope_colour) is from the colour
-// over the exact D_s (exact_slope_colour), in CIEDE2000 (scene-linear
+// Gaussian of D_s's exact moments (gaussian_slope_color) is from the colour
+// over the exact D_s (exact_slope_color), in CIEDE2000 (scene-linear
 // Rec.709), for two slope colour maps made here (docs/slope.md):
 //   grass-rock  a steepness map over the slope angle in degrees (36 texels
 //               over 0..90): grass up to 25, rock from 35 to 60, dark cliff
@@ -19,11 +19,11 @@
 // in {0, 20, 40, 60, 70, 80, 85, 89}, sigma_s in {0.1, 0.2, 0.4, 0.7, 1.0},
 // azimuths {0, 45, 150, 270}; each over the three shapes.
 // Three tables:
-//   1. the reference's convergence: exact_slope_colour with 8 to 64 panels
+//   1. the reference's convergence: exact_slope_color with 8 to 64 panels
 //      per axis against 128;
-//   2. the Gauss-Hermite points per axis: gaussian_slope_colour with n points
+//   2. the Gauss-Hermite points per axis: gaussian_slope_color with n points
 //      against a dense quadrature over the same Gaussian, the one of D_s's
-//      moments (exact_slope_colour with 64 panels at normal incidence, where
+//      moments (exact_slope_color with 64 panels at normal incidence, where
 //      D_s is the slope Gaussian itself), and that dense quadrature against
 //      the exact D_s colour: what the Gaussian itself leaves;
 //   3. the accuracy: the Gaussian-moment colour with n x n points (n = 6 to
@@ -33,9 +33,9 @@
 //      default and the dense quadrature up to 80 degrees by sigma_s.
 // Markdown on stdout; THREADS (default 1) share the cases.
 //   build/tests/bench/cmfilter-slope-fit-accuracy [THREADS]
-#include "cmfilter/ciede2000.h"
-#include "cmfilter/parallel_for.h"
-#include "cmfilter/slope_colour.h"
+#include "cmfilter/color/ciede2000.h"
+#include "cmfilter/util/parallel_for.h"
+#include "cmfilter/microsurface/slope_color.h"
 
 #include <algorithm>
 #include <cmath>
@@ -146,7 +146,7 @@ struct Summary {
 
 // One colouring of each case.
 template <typename F>
-std::vector<Rgb> colour_each(const std::vector<Case>& cases, int threads, F&& colour)
+std::vector<Rgb> color_each(const std::vector<Case>& cases, int threads, F&& colour)
 {
     std::vector<Rgb> out(cases.size());
     parallel_for(static_cast<int>(cases.size()), threads, [&](int i) { out[i] = colour(cases[i]); });
@@ -184,10 +184,10 @@ void reference_convergence(const char* name, const Map& map, int threads)
         cases.insert(cases.end(), part.begin(), part.end());
     }
     const std::vector<Rgb> reference =
-        colour_each(cases, threads, [&](const Case& c) { return exact_slope_colour(map, c.slopes, c.view, {128}); });
+        color_each(cases, threads, [&](const Case& c) { return exact_slope_color(map, c.slopes, c.view, {128}); });
     for (int panels : {8, 16, 32, 64}) {
-        const Summary s = compare(cases, colour_each(cases, threads, [&](const Case& c) {
-                                      return exact_slope_colour(map, c.slopes, c.view, {panels});
+        const Summary s = compare(cases, color_each(cases, threads, [&](const Case& c) {
+                                      return exact_slope_color(map, c.slopes, c.view, {panels});
                                   }),
                                   reference);
         std::printf("| %s | %d | %.5f | %.5f | %s |\n", name, panels, s.mean, s.max, where(s).c_str());
@@ -208,10 +208,10 @@ void hermite_points(const char* name, const Map& map, int threads)
         return SlopeGaussian{m.mean_x, m.mean_y, m.xx, m.xy, m.yy};
     };
     const std::vector<Rgb> dense =
-        colour_each(cases, threads, [&](const Case& c) { return exact_slope_colour(map, moment_gaussian(c), {0, 0}, {64}); });
+        color_each(cases, threads, [&](const Case& c) { return exact_slope_color(map, moment_gaussian(c), {0, 0}, {64}); });
     for (int n : {2, 3, 4, 5, 6, 8, 10, 12, 16, 20, 24, 32}) {
-        const Summary s = compare(cases, colour_each(cases, threads, [&](const Case& c) {
-                                      return gaussian_slope_colour(map, c.slopes, c.view, {n});
+        const Summary s = compare(cases, color_each(cases, threads, [&](const Case& c) {
+                                      return gaussian_slope_color(map, c.slopes, c.view, {n});
                                   }),
                                   dense);
         std::printf("| %s | %d | %.5f | %.5f | %s |\n", name, n, s.mean, s.max, where(s).c_str());
@@ -219,7 +219,7 @@ void hermite_points(const char* name, const Map& map, int threads)
     // What the Gaussian itself leaves: the dense quadrature over it against
     // the exact D_s colour.
     const Summary g = compare(
-        cases, dense, colour_each(cases, threads, [&](const Case& c) { return exact_slope_colour(map, c.slopes, c.view, {64}); }));
+        cases, dense, color_each(cases, threads, [&](const Case& c) { return exact_slope_color(map, c.slopes, c.view, {64}); }));
     std::printf("| %s | dense Gaussian vs exact D_s | %.5f | %.5f | %s |\n", name, g.mean, g.max, where(g).c_str());
 }
 
@@ -253,21 +253,21 @@ BySigma accuracy(const char* name, const Map& map, int threads)
         for (int part = 0; part < 2; ++part) {
             const std::vector<Case> cases = sweep(part == 0 ? up_to_80 : beyond_80, sigmas, azimuths, shape);
             const std::vector<Rgb> exact =
-                colour_each(cases, threads, [&](const Case& c) { return exact_slope_colour(map, c.slopes, c.view); });
+                color_each(cases, threads, [&](const Case& c) { return exact_slope_color(map, c.slopes, c.view); });
             std::printf("| %s | %s | %s | %zu |", name, shape, part == 0 ? "0..80" : "81..89.9", cases.size());
             Summary by_default;
             for (int n : kAccuracyPoints) {
-                Summary s = compare(cases, colour_each(cases, threads, [&](const Case& c) {
-                                        return gaussian_slope_colour(map, c.slopes, c.view, {n});
+                Summary s = compare(cases, color_each(cases, threads, [&](const Case& c) {
+                                        return gaussian_slope_color(map, c.slopes, c.view, {n});
                                     }),
                                     exact);
                 std::printf(" %.3f | %.3f |", s.mean, s.max);
-                if (n == GaussianSlopeColourOptions{}.points_per_axis) by_default = std::move(s);
+                if (n == GaussianSlopeColorOptions{}.points_per_axis) by_default = std::move(s);
             }
             // The Gaussian alone: a dense quadrature over it.
-            const Summary g = compare(cases, colour_each(cases, threads, [&](const Case& c) {
+            const Summary g = compare(cases, color_each(cases, threads, [&](const Case& c) {
                                           const SlopeMoments m = exact_slope_moments(c.slopes, c.view);
-                                          return exact_slope_colour(map, {m.mean_x, m.mean_y, m.xx, m.xy, m.yy}, {0, 0});
+                                          return exact_slope_color(map, {m.mean_x, m.mean_y, m.xx, m.xy, m.yy}, {0, 0});
                                       }),
                                       exact);
             std::printf(" %.3f | %.3f | %s |\n", g.mean, g.max, where(by_default).c_str());
@@ -294,7 +294,7 @@ int main(int argc, char** argv)
     const SteepnessColorMap rock = grass_and_rock();
     const SlopeVectorColorMap wheel = hue_wheel();
 
-    std::printf("Reference convergence: exact_slope_colour with P panels per axis against 128 (CIEDE2000)\n\n");
+    std::printf("Reference convergence: exact_slope_color with P panels per axis against 128 (CIEDE2000)\n\n");
     std::printf("| map | panels | mean | max | worst at |\n|---|---:|---:|---:|---|\n");
     reference_convergence("grass-rock", rock, threads);
     reference_convergence("hue-wheel", wheel, threads);
@@ -304,12 +304,12 @@ int main(int argc, char** argv)
     hermite_points("grass-rock", rock, threads);
     hermite_points("hue-wheel", wheel, threads);
 
-    ExactSlopeColourOptions exact_defaults;
+    ExactSlopeColorOptions exact_defaults;
     std::printf("\nThe Gaussian-moment colour with n x n Gauss-Hermite points, and with a dense quadrature over the "
                 "same Gaussian, against the exact D_s colour (%d panels) (CIEDE2000, mean | max)\n\n",
                 exact_defaults.panels);
     std::printf("| map | slopes | theta_o (degrees) | cases |");
-    const int default_points = GaussianSlopeColourOptions{}.points_per_axis;
+    const int default_points = GaussianSlopeColorOptions{}.points_per_axis;
     for (int n : kAccuracyPoints) std::printf(" n = %d%s mean | max |", n, n == default_points ? " (default)" : "");
     std::printf(" dense mean | max | worst at, n = %d |\n|---|---|---|---:|", default_points);
     for (std::size_t i = 0; i < std::size(kAccuracyPoints); ++i) std::printf("---:|---:|");

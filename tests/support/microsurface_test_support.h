@@ -7,11 +7,11 @@
 // footprints made by hand.
 #pragma once
 
-#include "cmfilter/color_map.h"
-#include "cmfilter/gaussian_color_table.h"
-#include "cmfilter/gaussian_microsurface.h"
-#include "cmfilter/microsurface_footprint.h"
-#include "cmfilter/scene_materials.h"
+#include "cmfilter/colormap/color_map.h"
+#include "cmfilter/tables/gaussian_color_table.h"
+#include "cmfilter/microsurface/gaussian_microsurface.h"
+#include "cmfilter/microsurface/microsurface_footprint.h"
+#include "cmfilter/scene/scene_materials.h"
 
 #include <doctest/doctest.h>
 
@@ -58,7 +58,7 @@ inline cmfilter::ColorMap microsurface_test_map()
 
 // C0(v) by hand: the texels' centres joined by straight lines, the end
 // colours beyond them (clamp).
-inline cmfilter::Rgb reference_map_colour(const cmfilter::ColorMap& map, double v)
+inline cmfilter::Rgb reference_map_color(const cmfilter::ColorMap& map, double v)
 {
     const int n = static_cast<int>(map.texels.size());
     const double width = (map.vmax - map.vmin) / n;
@@ -82,13 +82,13 @@ inline double steepest_map_slope(const cmfilter::ColorMap& map)
     return steepest;
 }
 
-struct ColourRange {
+struct ColorRange {
     cmfilter::Rgb lo, hi;
 };
 
-inline ColourRange colour_range(const cmfilter::ColorMap& map)
+inline ColorRange color_range(const cmfilter::ColorMap& map)
 {
-    ColourRange r{map.texels.front(), map.texels.front()};
+    ColorRange r{map.texels.front(), map.texels.front()};
     for (const cmfilter::Rgb& t : map.texels) {
         r.lo = {std::min(r.lo.r, t.r), std::min(r.lo.g, t.g), std::min(r.lo.b, t.b)};
         r.hi = {std::max(r.hi.r, t.r), std::max(r.hi.g, t.g), std::max(r.hi.b, t.b)};
@@ -97,7 +97,7 @@ inline ColourRange colour_range(const cmfilter::ColorMap& map)
 }
 
 // Whether every channel of c lies in [scale lo, scale hi], with a relative slack.
-inline bool within_scaled_range(const cmfilter::Rgb& c, const ColourRange& range, double scale, double slack)
+inline bool within_scaled_range(const cmfilter::Rgb& c, const ColorRange& range, double scale, double slack)
 {
     for (int k = 0; k < 3; ++k) {
         const double lo = scale * range.lo[k], hi = scale * range.hi[k];

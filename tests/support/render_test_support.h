@@ -3,15 +3,15 @@
 // material, and the CIEDE2000 difference of two renders.
 #pragma once
 
-#include "cmfilter/ciede2000.h"
-#include "cmfilter/color_config.h"
-#include "cmfilter/color_map_loading.h"
-#include "cmfilter/error_summary.h"
-#include "cmfilter/noise_spec.h"
-#include "cmfilter/render.h"
-#include "cmfilter/scene.h"
-#include "cmfilter/scene_materials.h"
-#include "cmfilter/vec3.h"
+#include "cmfilter/color/ciede2000.h"
+#include "cmfilter/color/color_config.h"
+#include "cmfilter/colormap/color_map_loading.h"
+#include "cmfilter/color/error_summary.h"
+#include "cmfilter/noise/noise_spec.h"
+#include "cmfilter/render/render.h"
+#include "cmfilter/scene/scene.h"
+#include "cmfilter/scene/scene_materials.h"
+#include "cmfilter/math/vec3.h"
 
 #include <doctest/doctest.h>
 

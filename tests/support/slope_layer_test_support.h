@@ -3,9 +3,9 @@
 // materials prepared from a parsed scene, and the text of loading errors.
 #pragma once
 
-#include "cmfilter/color_config.h"
-#include "cmfilter/scene.h"
-#include "cmfilter/scene_materials.h"
+#include "cmfilter/color/color_config.h"
+#include "cmfilter/scene/scene.h"
+#include "cmfilter/scene/scene_materials.h"
 
 #include "microsurface_test_support.h"
 
@@ -17,10 +17,10 @@
 
 namespace cmfilter_test {
 
-inline ColourRange texel_range(const std::vector<cmfilter::Rgb>& texels)
+inline ColorRange texel_range(const std::vector<cmfilter::Rgb>& texels)
 {
     REQUIRE_FALSE(texels.empty());
-    ColourRange r{texels.front(), texels.front()};
+    ColorRange r{texels.front(), texels.front()};
     for (const cmfilter::Rgb& t : texels) {
         r.lo = {std::min(r.lo.r, t.r), std::min(r.lo.g, t.g), std::min(r.lo.b, t.b)};
         r.hi = {std::max(r.hi.r, t.r), std::max(r.hi.g, t.g), std::max(r.hi.b, t.b)};
@@ -30,7 +30,7 @@ inline ColourRange texel_range(const std::vector<cmfilter::Rgb>& texels)
 
 // Every colour a slope map can give lies in its texels' range (linear or
 // bilinear between texels, clamped or repeated beyond).
-inline ColourRange slope_range(const cmfilter::SlopeMap& map)
+inline ColorRange slope_range(const cmfilter::SlopeMap& map)
 {
     if (const auto* s = std::get_if<cmfilter::SteepnessColorMap>(&map)) return texel_range(s->by_angle.texels);
     return texel_range(std::get<cmfilter::SlopeVectorColorMap>(map).texels);

@@ -2,8 +2,8 @@
 // independent test-side twin, and the built-in colour config.
 #pragma once
 
-#include "cmfilter/color_config.h"
-#include "cmfilter/color_map.h"
+#include "cmfilter/color/color_config.h"
+#include "cmfilter/colormap/color_map.h"
 
 #include "reference_convolution.h"
 

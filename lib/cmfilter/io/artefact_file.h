@@ -1,0 +1,24 @@
+// Shared steps of reading and writing single-image cmfilter artefacts (EXR
+// with cmfilter:* metadata): the kind and format-version check a reader does
+// first, and the final write of float pixels through an AtomicOutput.
+#pragma once
+
+#include "cmfilter/util/atomic_output.h"
+#include "cmfilter/util/error.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <string>
+
+namespace cmfilter {
+
+// BadInput unless cmfilter:kind is `kind` and cmfilter:format_version is
+// `version`; messages name the file and call it a cmfilter `what`.
+Status check_artefact_kind(const OIIO::ImageSpec& spec, const std::string& path, const std::string& kind,
+                           const std::string& what, int version);
+
+// Writes `spec`'s pixels (float, interleaved) to out's temporary file and
+// commits it to its destination.
+Status write_float_artefact(AtomicOutput& out, const OIIO::ImageSpec& spec, const float* pixels);
+
+}  // namespace cmfilter

@@ -1,0 +1,58 @@
+#include "cmfilter/io/image_colorspace.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace cmfilter {
+
+namespace {
+
+// The colour space as named (before resolution) and the rule that chose it.
+Expected<ImageColorSpace> choose(const ImageData& img, const std::string& path,
+                                 const std::string& requested, const std::string& option)
+{
+    if (!requested.empty()) return ImageColorSpace{requested, option};
+    if (img.colorspace_attr == "GammaCorrected") {
+        // OpenImageIO reports a PNG gAMA chunk (and similar) as a pure power law.
+        const float g = img.gamma_attr;
+        if (std::fabs(g - 2.2f) < 0.01f) return ImageColorSpace{"Gamma 2.2", "file metadata (gamma 2.2)"};
+        if (std::fabs(g - 1.8f) < 0.01f) return ImageColorSpace{"Gamma 1.8", "file metadata (gamma 1.8)"};
+        if (std::fabs(g - 1.0f) < 0.01f) return ImageColorSpace{"scene_linear", "file metadata (gamma 1.0)"};
+        std::ostringstream msg;
+        msg << "'" << path << "' declares gamma " << g
+            << ", which no colour space of the config matches; pass " << option << " NAME";
+        return bad_input(msg.str());
+    }
+    if (!img.colorspace_attr.empty()) return ImageColorSpace{img.colorspace_attr, "file metadata"};
+    if (img.is_float) return ImageColorSpace{"scene_linear", "default for float files"};
+    return ImageColorSpace{"sRGB", "default for integer files"};
+}
+
+}  // namespace
+
+Expected<ImageColorSpace> decide_image_colorspace(const ImageData& img, const std::string& path,
+                                                  const std::string& requested,
+                                                  const std::string& option,
+                                                  const ColorConfig& config)
+{
+    auto choice = choose(img, path, requested, option);
+    if (!choice) return choice.error();
+    auto canonical = config.resolve(choice->colorspace);
+    if (!canonical) {
+        if (choice->rule == "file metadata")
+            return bad_input("'" + path + "' declares colour space '" + choice->colorspace +
+                             "' (oiio:ColorSpace), which the " + config.source() +
+                             " OpenColorIO config does not know; pass " + option + " NAME");
+        return canonical.error();
+    }
+    return ImageColorSpace{*canonical, choice->rule};
+}
+
+Status image_rgb_to_scene_linear(std::vector<float>& rgb, const ImageColorSpace& space,
+                                 const ColorConfig& config)
+{
+    if (config.is_data(space.colorspace)) return ok();
+    return config.to_scene_linear(rgb, space.colorspace);
+}
+
+}  // namespace cmfilter

@@ -1,0 +1,37 @@
+// Reading any image OpenImageIO can read into float pixels, with errors that
+// tell a missing or unreadable file (Io) from a file that is not an image or
+// has no pixels (BadInput). Shared by colour maps and, later, drivers.
+#pragma once
+
+#include "cmfilter/util/error.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace cmfilter {
+
+struct ImageData {
+    int width = 0;
+    int height = 0;
+    int channels = 0;
+    std::vector<std::string> channel_names;
+    std::vector<float> pixels;     // width * height * channels, row-major, top row first
+    std::string format;            // OpenImageIO format name ("png", "openexr", ...)
+    std::string pixel_type;        // stored type ("uint8", "half", "float", ...)
+    bool is_float = false;         // stored as half/float/double
+    std::string colorspace_attr;   // "colorInteropID", else "oiio:ColorSpace", or empty
+    float gamma_attr = 0;          // "oiio:Gamma" when declared, else 0
+};
+
+Expected<ImageData> read_image(const std::string& path);
+
+// Opens `path` for reading after the same checks: Io when it is missing, a
+// directory or unreadable; BadInput when it is empty, not an image, or has no
+// pixels. `config` (may be null) is passed to OpenImageIO's ImageInput::open.
+Expected<std::unique_ptr<OIIO::ImageInput>> open_image_input(const std::string& path,
+                                                             const OIIO::ImageSpec* config = nullptr);
+
+}  // namespace cmfilter

@@ -1,0 +1,72 @@
+#include "cmfilter/io/rgb_image_file.h"
+
+#include "cmfilter/util/atomic_output.h"
+#include "cmfilter/io/metadata.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <cmath>
+
+namespace cmfilter {
+
+Status check_rgb_image_output(const std::string& path, bool exr_only)
+{
+    const std::string ext = lowercase_extension(path);
+    if (exr_only && ext != ".exr") return bad_input("output '" + path + "' has the wrong extension (expected .exr)");
+    if (ext != ".exr" && ext != ".png" && ext != ".jpg" && ext != ".jpeg")
+        return bad_input("output '" + path + "' has the wrong extension (expected .exr, .png, .jpg or .jpeg)");
+    return check_output_path(path, "");
+}
+
+Status write_rgb_image(const std::string& path, int width, int height, int channels,
+                       const std::vector<float>& pixels, const std::string& linear_space,
+                       const ImageAttributes& attributes, const ColorConfig& config)
+{
+    if (auto st = check_rgb_image_output(path); !st) return st;
+    const bool exr = lowercase_extension(path) == ".exr";
+    if (!exr && channels != 3)
+        return bad_input("output '" + path + "': PNG and JPEG need 3 channels, got " + std::to_string(channels));
+    if (pixels.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * static_cast<std::size_t>(channels))
+        return runtime_error("image for '" + path + "' has " + std::to_string(pixels.size()) + " values, expected " +
+                             std::to_string(static_cast<long long>(width) * height * channels));
+    OIIO::ImageSpec spec(width, height, channels, exr ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+    if (channels == 1) spec.channelnames = {"Y"};
+    for (const auto& [key, value] : attributes.text) spec.attribute(key, value);
+    for (const auto& [key, value] : attributes.numbers) set_double_attribute(spec, key.c_str(), value);
+
+    std::vector<unsigned char> codes;
+    if (exr) {
+        spec.attribute("compression", "zip");
+        if (!linear_space.empty()) spec.attribute("oiio:ColorSpace", linear_space);
+    } else {
+        // Scene-linear -> sRGB encoding through OpenColorIO, then 8-bit codes.
+        auto srgb = config.resolve("sRGB");
+        if (!srgb) return srgb.error();
+        std::vector<float> encoded = pixels;
+        if (auto st = config.from_scene_linear(encoded, *srgb); !st) return st;
+        codes.resize(encoded.size());
+        for (std::size_t i = 0; i < encoded.size(); ++i) {
+            float v = encoded[i];
+            if (!(v > 0.0f)) v = 0.0f;  // also NaN
+            if (v > 1.0f) v = 1.0f;
+            codes[i] = static_cast<unsigned char>(std::lround(255.0f * v));
+        }
+        spec.attribute("oiio:ColorSpace", "sRGB");
+        spec.attribute("cmfilter:encoding", *srgb);
+    }
+
+    auto out = AtomicOutput::begin(path);
+    if (!out) return out.error();
+    auto writer = OIIO::ImageOutput::create(out->temp_path());
+    if (!writer) return runtime_error("OpenImageIO cannot write '" + path + "': " + OIIO::geterror());
+    if (!writer->open(out->temp_path(), spec) ||
+        !(exr ? writer->write_image(OIIO::TypeDesc::FLOAT, pixels.data())
+              : writer->write_image(OIIO::TypeDesc::UINT8, codes.data())) ||
+        !writer->close()) {
+        std::string why = writer->geterror();
+        return io_error("cannot write '" + path + "': " + why);
+    }
+    return out->commit();
+}
+
+}  // namespace cmfilter

@@ -1,0 +1,95 @@
+#include "cmfilter/ops/artefact_info.h"
+
+#include "cmfilter/ops/filtered_image_file.h"
+#include "cmfilter/tables/gaussian_color_table_file.h"
+#include "cmfilter/texture/histogram_pyramid.h"
+#include "cmfilter/io/image_reading.h"
+#include "cmfilter/texture/moment_pyramid_info.h"
+#include "cmfilter/noise/noise_image.h"
+#include "cmfilter/noise/noise_sigma_table_file.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <cstdio>
+
+namespace cmfilter {
+
+namespace {
+
+std::string describe_kind(const std::string& kind, int width, int height)
+{
+    if (kind == kGaussianColorTableKind)
+        return "prefiltered colour-map table T(v, sigma) = (C0 * N(0, sigma^2))(v) (Heitz et al. "
+               "2013, eq. 10): " + std::to_string(width) + " value nodes x " +
+               std::to_string(height) + " sigma nodes, scene-linear RGB";
+    if (kind == kMomentPyramidKind)
+        return "moment pyramid of a driver f (Heitz et al. 2013, sec. 4.2): " +
+               std::to_string(width) + " x " + std::to_string(height) +
+               " level 0, tiled MIP-map; channels m1, m2 = box means of (f - c) and (f - c)^2 "
+               "about the reference value c; mean = c + m1, variance = max(0, m2 - m1^2)";
+    if (kind == kHistogramPyramidKind)
+        return "histogram pyramid of a driver with few distinct values (Heitz et al. 2013, sec. "
+               "4.1, exact solutions): " + std::to_string(width) + " x " + std::to_string(height) +
+               " level 0, tiled MIP-map; channel b = fraction of the footprint where f = v_b "
+               "(cmfilter:values)";
+    if (kind == kFilteredImageKind)
+        return "filtered colour image of a colour-mapped driver (cmfilter apply): " +
+               std::to_string(width) + " x " + std::to_string(height) + " RGB";
+    if (kind == kNoiseImageKind)
+        return "procedural noise driver (cmfilter noise-image): " + std::to_string(width) + " x " +
+               std::to_string(height) + ", channel Y = the noise (cmfilter:noise) at pixel centres, "
+               "data (no colour space)";
+    if (kind == kNoiseSigmaTableKind)
+        return "noise sigma table (Heitz et al. 2013, sec. 4.2: the noise standard deviation per level "
+               "of detail, a 1D texture): " + std::to_string(width) + " LODs from cmfilter:lod_first in "
+               "steps of cmfilter:lod_step; channels box_sigma, gaussian_sigma (unresolved standard "
+               "deviation inside a box of width w = base_period 2^LOD / a Gaussian of standard deviation "
+               "w/2) and box_ci, gaussian_ci (95% confidence half-widths)";
+    return "cmfilter artefact of an unknown kind (made by a newer cmfilter?)";
+}
+
+std::string format_value(const OIIO::ParamValue& p)
+{
+    const OIIO::TypeDesc t = p.type();
+    if (t == OIIO::TypeDesc::DOUBLE || t == OIIO::TypeDesc::FLOAT) {
+        char buf[64];
+        std::snprintf(buf, sizeof buf, "%.17g",
+                      t == OIIO::TypeDesc::DOUBLE ? p.get<double>() : static_cast<double>(p.get<float>()));
+        return buf;
+    }
+    return p.get_string();
+}
+
+}  // namespace
+
+Expected<ArtefactInfo> read_artefact_info(const std::string& path)
+{
+    // read_image gives the Io/BadInput distinction for missing and non-image files.
+    auto in = OIIO::ImageInput::open(path);
+    if (!in) {
+        auto img = read_image(path);
+        if (!img) return img.error();
+        return bad_input("'" + path + "' is not an image OpenImageIO can read");
+    }
+    const OIIO::ImageSpec& spec = in->spec();
+    ArtefactInfo info;
+    info.path = path;
+    info.format = in->format_name();
+    info.width = spec.width;
+    info.height = spec.height;
+    info.channels = spec.nchannels;
+    for (const auto& p : spec.extra_attribs) {
+        const std::string name = p.name().string();
+        if (name.rfind("cmfilter:", 0) != 0) continue;
+        const std::string key = name.substr(9);
+        if (key == "kind") info.kind = p.get_string();
+        info.parameters.emplace_back(key, format_value(p));
+    }
+    if (info.kind.empty())
+        return bad_input("'" + path + "' is an image but not a cmfilter artefact (no cmfilter:kind "
+                         "metadata)");
+    info.description = describe_kind(info.kind, info.width, info.height);
+    return info;
+}
+
+}  // namespace cmfilter

@@ -1,0 +1,252 @@
+#include "cmfilter/ops/filtered_image.h"
+
+#include "cmfilter/texture/box_pyramid.h"
+#include "cmfilter/texture/color_pyramid.h"
+#include "cmfilter/io/driver_image.h"
+#include "cmfilter/tables/gaussian_color_table_file.h"
+#include "cmfilter/texture/histogram_pyramid.h"
+#include "cmfilter/io/image_reading.h"
+#include "cmfilter/texture/moment_source.h"
+#include "cmfilter/texture/moment_texture.h"
+#include "cmfilter/util/parallel_for.h"
+#include "cmfilter/tables/table_color_map.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <optional>
+#include <sstream>
+#include <system_error>
+
+namespace cmfilter {
+
+namespace {
+
+std::string format_number(double v)
+{
+    std::ostringstream s;
+    s.precision(9);
+    s << v;
+    return s.str();
+}
+
+// Level-0 driver texels outside [vmin, vmax], from the moments' m1 channel:
+// f = c + m1, where float32 storage of f - c leaves an error of at most half
+// an ulp of m1 (2^-24 |m1|); a texel counts as outside only beyond that.
+Expected<std::size_t> count_outside(const std::string& path, const MomentPyramidInfo& info,
+                                    double vmin, double vmax)
+{
+    auto in = open_image_input(path);
+    if (!in) return in.error();
+    std::vector<float> m1(static_cast<std::size_t>(info.width) * info.height);
+    if (!(*in)->read_image(0, 0, 0, 1, OIIO::TypeDesc::FLOAT, m1.data()))
+        return io_error("cannot read level 0 of '" + path + "': " + (*in)->geterror());
+    std::size_t outside = 0;
+    for (float d : m1) {
+        const double f = info.reference + d, slack = 0x1.0p-23 * std::abs(d);
+        if (f < vmin - slack || f > vmax + slack) ++outside;
+    }
+    return outside;
+}
+
+// The driver a moment pyramid was baked from (reference), read the same way
+// and checked against the recorded hash.
+Expected<DriverImage> read_source_driver(const ApplyOptions& options, const MomentPyramidInfo& info,
+                                         std::string& path, std::vector<std::string>& warnings,
+                                         int threads)
+{
+    const bool overridden = !options.driver_path.empty();
+    path = overridden ? options.driver_path : info.source;
+    std::error_code ec;
+    if (!overridden && !std::filesystem::is_regular_file(path, ec))
+        return io_error("cannot read driver '" + path + "' recorded in '" + options.moments_path +
+                        "' (cmfilter:source): no such file; pass --driver PATH to give its location");
+    auto driver = read_moment_source(path, options.moments_path, info, threads);
+    if (!driver) return driver.error();
+    if (!is_moment_source(*driver, info)) {
+        const std::string what = moment_source_changed(path, *driver, options.moments_path, info);
+        if (!overridden)
+            return bad_input(what + "; re-bake the moments, or pass --driver PATH to use it anyway");
+        warnings.push_back(what + "; using it as --driver asks");
+    }
+    return std::move(driver->image);
+}
+
+}  // namespace
+
+const char* to_string(FilterMethod method)
+{
+    switch (method) {
+    case FilterMethod::Naive: return "naive";
+    case FilterMethod::Gaussian: return "gaussian";
+    case FilterMethod::Exact: return "exact";
+    case FilterMethod::Reference: return "reference";
+    }
+    return "?";
+}
+
+Expected<FilterMethod> parse_filter_method(const std::string& name)
+{
+    for (FilterMethod m : {FilterMethod::Naive, FilterMethod::Gaussian, FilterMethod::Exact,
+                           FilterMethod::Reference})
+        if (name == to_string(m)) return m;
+    return bad_input("unknown method '" + name + "' (expected naive, gaussian, exact or reference)");
+}
+
+Expected<FilteredImage> apply_filter(const ApplyOptions& options, const ColorConfig& config)
+{
+    if (options.width < 0 || options.height < 0 || (options.width == 0) != (options.height == 0))
+        return bad_input("output size " + std::to_string(options.width) + "x" +
+                         std::to_string(options.height) + " is invalid (expected W, H >= 1)");
+    if (!std::isfinite(options.lod))
+        return bad_input("--lod " + format_number(options.lod) + " is invalid (expected a finite number)");
+    if (options.method == FilterMethod::Exact && options.histograms_path.empty())
+        return bad_input("--method exact needs --histograms H.exr (the driver's histogram pyramid, "
+                         "sec. 4.1)");
+
+    FilteredImage out;
+    out.method = options.method;
+    out.linear_space = config.scene_linear_name();
+    out.moments_path = options.moments_path;
+    out.table_path = options.table_path;
+    out.lod_requested = options.lod;
+
+    auto moments = MomentTexture::open(options.moments_path);
+    if (!moments) return moments.error();
+    const MomentPyramidInfo& info = moments->info();
+    out.moments = info;
+    auto table = read_gaussian_color_table(options.table_path);
+    if (!table) return table.error();
+    const TableAxes& axes = table->table.axes();
+
+    // The driver's range against the map's domain. With clamp, a driver
+    // entirely outside would take one end colour everywhere: refused.
+    const std::string domain = "[" + format_number(axes.vmin) + ", " + format_number(axes.vmax) + "]";
+    if (axes.wrap == WrapMode::Clamp && (info.driver_max < axes.vmin || info.driver_min > axes.vmax))
+        return bad_input("the driver range [" + format_number(info.driver_min) + ", " +
+                         format_number(info.driver_max) + "] of '" + options.moments_path +
+                         "' does not overlap the domain " + domain + " of table '" +
+                         options.table_path + "' (expected overlapping ranges; re-bake the table "
+                         "with a --domain that covers the driver)");
+    if (info.driver_min < axes.vmin || info.driver_max > axes.vmax) {
+        auto outside = count_outside(options.moments_path, info, axes.vmin, axes.vmax);
+        if (!outside) return outside.error();
+        out.texels_outside_domain = *outside;
+        out.fraction_outside_domain =
+            static_cast<double>(*outside) / (static_cast<double>(info.width) * info.height);
+        if (axes.wrap == WrapMode::Clamp && *outside > 0)
+            out.warnings.push_back(
+                std::to_string(*outside) + " of the driver's texels (" +
+                format_number(100 * out.fraction_outside_domain) + "%) lie outside the domain " +
+                domain + " of table '" + options.table_path + "' and take its end colours");
+    }
+
+    // The level of detail: TextureSystem can reach levels 0 .. top.
+    out.top_level = moments->reachable_levels() - 1;
+    const float lod = std::clamp(static_cast<float>(options.lod), 0.0f, static_cast<float>(out.top_level));
+    out.lod = lod;
+    out.lod_clamped = static_cast<double>(lod) != options.lod;
+    if (out.lod_clamped)
+        out.warnings.push_back("--lod " + format_number(options.lod) + " is outside [0, " +
+                               std::to_string(out.top_level) + "] for '" + options.moments_path +
+                               "' (" + std::to_string(info.width) + " x " + std::to_string(info.height) +
+                               "); clamped to " + format_number(lod));
+    const int base = static_cast<int>(std::floor(lod));
+    out.width = options.width > 0 ? options.width : box_level_extent(info.width, base);
+    out.height = options.height > 0 ? options.height : box_level_extent(info.height, base);
+
+    // C0 itself, for the methods that evaluate it exactly.
+    std::optional<TableColorMap> map;
+    if (options.method != FilterMethod::Gaussian) {
+        TableColorMapOptions mo;
+        mo.table_path = options.table_path;
+        mo.map_override = options.map_path;
+        auto loaded = load_table_color_map(*table, mo, config);
+        if (!loaded) return loaded.error();
+        map = std::move(*loaded);
+        out.map_path = map->map.provenance.path;
+        out.warnings.insert(out.warnings.end(), map->warnings.begin(), map->warnings.end());
+    }
+
+    std::optional<ColorPyramid> pyramid;
+    if (options.method == FilterMethod::Reference) {
+        auto driver = read_source_driver(options, info, out.driver_path, out.warnings, options.threads);
+        if (!driver) return driver.error();
+        ColorPyramidOptions po;
+        po.driver = &driver->values;
+        po.width = info.width;
+        po.height = info.height;
+        po.map = &map->map.map;
+        po.wrap = info.wrap;
+        po.reference = info.reference;
+        po.threads = options.threads;
+        pyramid = ColorPyramid::build(po);
+    }
+
+    std::optional<HistogramTexture> histograms;
+    std::vector<Rgb> bin_colors;
+    if (options.method == FilterMethod::Exact) {
+        auto h = HistogramTexture::open(options.histograms_path);
+        if (!h) return h.error();
+        if (h->info().width != info.width || h->info().height != info.height)
+            return bad_input("histogram pyramid '" + options.histograms_path + "' is " +
+                             std::to_string(h->info().width) + " x " + std::to_string(h->info().height) +
+                             " but '" + options.moments_path + "' is " + std::to_string(info.width) +
+                             " x " + std::to_string(info.height) + " (expected the same driver)");
+        for (double v : h->info().values) bin_colors.push_back(map->map.map.evaluate(v));
+        out.histograms_path = options.histograms_path;
+        histograms = std::move(*h);
+    }
+
+    // Every output pixel, rows in parallel; progress between batches of rows.
+    const int W = out.width, H = out.height;
+    out.rgb.assign(static_cast<std::size_t>(W) * H * 3, 0.0f);
+    std::vector<LookupCounters> counters(H);
+    std::vector<std::size_t> failed(H, 0);
+    const auto shade_row = [&](int y) {
+        const float t = static_cast<float>((y + 0.5) / H);
+        std::vector<float> weights(bin_colors.size());
+        for (int x = 0; x < W; ++x) {
+            const float s = static_cast<float>((x + 0.5) / W);
+            Rgb c;
+            if (options.method == FilterMethod::Reference) {
+                c = pyramid->lookup(s, t, lod);  // mean C0(f) over the footprint
+            } else if (options.method == FilterMethod::Exact) {
+                // <C0, D> = sum_b h_b C0(v_b), exact for a box footprint (sec. 4.1).
+                if (histograms->lookup(s, t, lod, weights.data()))
+                    for (std::size_t b = 0; b < weights.size(); ++b) c += weights[b] * bin_colors[b];
+                else
+                    ++failed[y];
+            } else {
+                const MomentSample m = moments->lookup(s, t, lod);  // mean f, sigma_f (sec. 4.2)
+                if (!m.ok) ++failed[y];
+                c = options.method == FilterMethod::Naive
+                        ? map->map.map.evaluate(m.mean)                          // C0(mean f)
+                        : table->table.lookup(m.mean, m.sigma, &counters[y]);   // T(mean, sigma), eq. 10
+            }
+            float* p = out.rgb.data() + (static_cast<std::size_t>(y) * W + x) * 3;
+            p[0] = static_cast<float>(c.r);
+            p[1] = static_cast<float>(c.g);
+            p[2] = static_cast<float>(c.b);
+        }
+    };
+    const int batch = std::max(1, std::min(H, 4 * resolve_thread_count(options.threads)));
+    for (int y0 = 0; y0 < H; y0 += batch) {
+        const int n = std::min(batch, H - y0);
+        parallel_for(n, options.threads, [&](int i) { shade_row(y0 + i); });
+        if (options.progress) options.progress(static_cast<double>(y0 + n) / H);
+    }
+    for (int y = 0; y < H; ++y) {
+        out.table_counters.lookups += counters[y].lookups;
+        out.table_counters.sigma_clamped += counters[y].sigma_clamped;
+        out.table_counters.value_clamped += counters[y].value_clamped;
+        out.table_counters.invalid += counters[y].invalid;
+        out.failed_lookups += failed[y];
+    }
+    if (out.failed_lookups > 0)
+        out.warnings.push_back(std::to_string(out.failed_lookups) +
+                               " texture lookups failed and were read as black");
+    return out;
+}
+
+}  // namespace cmfilter

@@ -1,0 +1,136 @@
+// `cmfilter render`: a scene (scene.h) seen through its pinhole camera, each
+// pixel's colour-mapped surface filtered over the pixel's own footprint
+// (docs/render.md). Every method uses the same box pixel:
+//   naive        one ray through the pixel centre; C0(mean), the colour map
+//                of the driver's filtered mean over the footprint;
+//   gaussian     the same ray; T(mean, sigma) (eq. 10), sigma from the
+//                noise's table at the footprint's LOD, or from a texture's
+//                moment pyramid (sec. 4.2);
+//   exact        the same ray; sum_b h_b C0(v_b) (sec. 4.1) for a texture
+//                driver with at most 256 distinct values v_b, the weights h_b
+//                from its histogram pyramid (histogram_pyramid.h), averaged
+//                over the footprint's probes (texture_footprint.h): exact for
+//                a footprint made of squares aligned with a pyramid level;
+//                materials need their histograms
+//                (MaterialOptions::histograms), and noise drivers are refused;
+//   supersample  N rays per pixel (a jittered N = n x n grid when N is a
+//                square, else N rooks: one sample per row and column of an
+//                N x N grid, columns shuffled), each point-evaluating C0(f(x))
+//                (a texture: f bilinear in its level 0) and shaded on its
+//                own; misses count as background;
+//   reference    supersample with at least 1024 rays (the paper's 32 x 32).
+// A microsurface material (scene.h; secs. 5-6: a Gaussian microsurface or a
+// textured displacement) is coloured by its layers instead
+// (microsurface_albedo.h): by height, naive C_h of the footprint's mean
+// height, gaussian V T(mean + mu_d, sigma_d) with the paper's fit (eqs. 13,
+// 17-18), gaussian-exact the same with D_h's exact moments, exact V <C_h,
+// D_h> (height_filtered_albedo.h, over the heights the footprint does not
+// resolve, microsurface_footprint.h); by slope, naive C_s of the resolved
+// slope, gaussian and gaussian-exact V <C_s, Gaussian of D_s's moments>,
+// exact V <C_s, D_s> (slope_color.h; a displacement's own slopes,
+// displacement_slope_color.h); a base layer C0 filtered as gaussian does;
+// the layers summed with weights or multiplied. supersample and reference
+// trace the displaced plane and its shadow rays (displaced_plane_sample.h),
+// colour each hit by the combination and estimate the albedo per pixel
+// (docs/microsurface.md). gaussian-exact on a driver surface is gaussian.
+// The footprint is the parallelogram of the ray differentials in texture
+// space (surface_hit.h), cut along its major edge into up to max_probes
+// pieces (anisotropic_probes.h), each reduced to one width
+// (footprint_width.h): a noise filters each piece at that width, a texture
+// looks its pyramids up isotropically at the width's LOD, log2 of the width
+// in level-0 texels (texture_footprint.h). A pixel's colour is the mean of
+// its probes' colours.
+// The one-ray methods cover the pixels on silhouettes, horizons and meetings
+// of surfaces geometrically (RenderOptions::edge_coverage, pixel_coverage.h).
+// Shading: Lambertian, albedo x (radiance max(0, <n, l>) + ambient).
+// Deterministic for a given seed, whatever the thread count.
+#pragma once
+
+#include "cmfilter/util/error.h"
+#include "cmfilter/texture/footprint_width.h"
+#include "cmfilter/microsurface/light_weighted_slope_map.h"
+#include "cmfilter/scene/scene.h"
+#include "cmfilter/scene/scene_materials.h"
+#include "cmfilter/microsurface/smith_lambda.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace cmfilter {
+
+enum class RenderMethod { Naive, Gaussian, GaussianExact, Exact, Supersample, Reference };
+const char* to_string(RenderMethod method);
+Expected<RenderMethod> parse_render_method(const std::string& text);
+
+inline constexpr int kReferenceSamples = 1024;
+inline constexpr int kMaxSamples = 1 << 16;
+
+struct RenderOptions {
+    RenderMethod method = RenderMethod::Gaussian;
+    int samples = 16;  // supersample: N >= 1; reference: max(N, 1024)
+    std::uint64_t seed = 0;
+    int threads = 0;   // 0: all cores
+    FootprintWidth footprint = FootprintWidth::Rms;
+    // Naive, gaussian and exact: filter an anisotropic footprint as up to
+    // this many probes along its major edge (anisotropic_probes.h; textures:
+    // texture_footprint.h); 1: one footprint. 16 by default: on the bundled
+    // ground planes the error stops falling there (docs/render.md).
+    int max_probes = 16;
+    // naive, gaussian, exact: where a silhouette, a horizon or a meeting of
+    // two surfaces crosses the pixel, mix each surface seen (filtered over
+    // its own part) and the background by their shares of the box pixel
+    // (pixel_coverage.h), as the supersampled methods do; false: the centre
+    // ray's surface (or the background) for the whole pixel.
+    bool edge_coverage = true;
+    // Microsurfaces: how masking and shadowing combine (smith_lambda.h):
+    // correlated by azimuth (the default: gaussian-exact within 0.5 mean
+    // CIEDE2000 of the ray-traced reference up to 80 degrees in every set-up
+    // of docs/microsurface.md, where with eq. 13 it is 2.2 from it with the
+    // light from the viewer), or independent as in the paper's eq. 13.
+    MaskingShadowing masking = MaskingShadowing::DirectionCorrelated;
+    // Microsurfaces coloured by slope: weighted by each facet's cosine to the
+    // light (the default, light_weighted_slope_map.h: from up to 25 mean
+    // CIEDE2000 to under 2 on a slope-vector map lit from the side,
+    // docs/slope.md), or eq. 19's colour (the facets' shading uncorrelated
+    // with it).
+    SlopeShading slope_shading = SlopeShading::Correlated;
+    std::function<void(double)> progress;  // fraction of rows done, may be empty
+};
+
+struct RenderedImage {
+    int width = 0, height = 0;
+    std::vector<float> rgb;    // scene-linear, top row first
+    // Per pixel, from the ray through its centre (every method): whether it
+    // hit a surface, its distance, and the filtered mean, sigma and LOD of
+    // the driver there (0 where nothing is hit).
+    std::vector<unsigned char> hit;
+    std::vector<float> distance, mean, sigma, lod;
+    // supersample and reference only (empty otherwise): the share of the
+    // pixel's rays that hit a surface, and their mean distance (0 where none
+    // does): the pixels a surface covers in part, whose centre ray may miss.
+    std::vector<float> covered, covered_distance;
+    // supersample and reference on a scene with a microsurface (else empty):
+    // the fully shaded image, each ray's hit lit by the light through its own
+    // micro-normal and shadow ray, C_h(h) (radiance <m, l>+ V + ambient),
+    // where rgb holds the eq. 14 albedo shaded by the plane's normal.
+    std::vector<float> shaded;
+    RenderMethod method = RenderMethod::Gaussian;
+    int samples = 1;           // rays per pixel
+    // gaussian: footprints (pixels or probes) coloured, and how many took
+    // C0(mean) directly (the small-sigma shortcut, gaussian_albedo.h).
+    std::size_t footprints = 0, plain_footprints = 0;
+    double seconds = 0;        // wall time of the pixel loop
+};
+
+// BadInput for a sample count outside 1 .. kMaxSamples, a material count
+// that does not match the scene, a material without a driver, or, for the
+// exact method, a noise driver or a texture without its histogram pyramid;
+// Io for supersample or reference on a texture without its level 0 (a
+// moments driver whose recorded driver is gone, naming it).
+Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMaterial>& materials,
+                               const RenderOptions& options);
+
+}  // namespace cmfilter

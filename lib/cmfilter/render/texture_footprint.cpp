@@ -1,0 +1,65 @@
+#include "cmfilter/render/texture_footprint.h"
+
+#include "cmfilter/texture/anisotropic_probes.h"
+#include "cmfilter/texture/texture_lod.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cmfilter {
+
+namespace {
+
+// sum_b h_b C0(v_b) (sec. 4.1), the inner product of eq. 8 over the
+// histogram at (u, v) and the trilinear lookup LOD lod (below 0: level 0). A
+// failed lookup leaves zero weights (black), as apply's exact method.
+Rgb histogram_color(const HistogramTexture& histograms, double u, double v, double lod,
+                     const std::vector<Rgb>& colors, std::vector<float>& weights)
+{
+    weights.resize(colors.size());
+    if (histograms.info().wrap == TextureWrap::Periodic) {
+        u -= std::floor(u);
+        v -= std::floor(v);
+    }
+    const float level = std::isfinite(lod) ? static_cast<float>(std::max(0.0, lod)) : 0.0f;
+    histograms.lookup(static_cast<float>(u), static_cast<float>(v), level, weights.data());
+    Rgb albedo;
+    for (std::size_t b = 0; b < colors.size(); ++b) albedo += static_cast<double>(weights[b]) * colors[b];
+    return albedo;
+}
+
+}  // namespace
+
+TextureFootprint filter_texture_footprint(const SurfaceMaterial& m, const SurfaceHit& h, TextureColor colour,
+                                          FootprintWidth width, int max_probes, const std::vector<Rgb>& bin_colors,
+                                          std::vector<float>& weights)
+{
+    const FilteredTexture& texture = *m.texture;
+    TextureFootprint out;
+    const FootprintProbes probes = footprint_probes(h.du_dx, h.dv_dx, h.du_dy, h.dv_dy, max_probes, width);
+    out.probes = probes.count;
+    out.lod = texture.lod(probes.width);
+    const double lookup_lod = trilinear_lod_for_box(out.lod);  // as FilteredTexture::filter's
+    for (int j = 0; j < probes.count; ++j) {
+        const double o = (j + 0.5) / probes.count - 0.5;
+        const double u = h.u + o * probes.step_u, v = h.v + o * probes.step_v;
+        const MomentSample f = texture.filter(u, v, probes.width);
+        out.mean += f.mean;
+        out.sigma += f.sigma;
+        switch (colour) {
+        case TextureColor::None: break;
+        case TextureColor::Naive: out.albedo += m.map.evaluate(f.mean); break;
+        case TextureColor::Gaussian: out.albedo += gaussian_albedo(m, f.mean, f.sigma, out.counts); break;
+        case TextureColor::Exact:
+            out.albedo += histogram_color(*m.histograms, u, v, lookup_lod, bin_colors, weights);
+            break;
+        }
+    }
+    const double n = probes.count;
+    out.albedo = (1.0 / n) * out.albedo;
+    out.mean /= n;
+    out.sigma /= n;
+    return out;
+}
+
+}  // namespace cmfilter

@@ -1,0 +1,418 @@
+#include "cmfilter/scene/scene_materials.h"
+
+#include "cmfilter/colormap/color_map_loading.h"
+#include "cmfilter/tables/gaussian_color_table_file.h"
+#include "cmfilter/texture/moment_pyramid.h"
+#include "cmfilter/texture/moment_source.h"
+#include "cmfilter/noise/noise_sigma_bake.h"
+#include "cmfilter/noise/noise_sigma_table_file.h"
+#include "cmfilter/noise/noise_spec.h"
+#include "cmfilter/colormap/slope_color_map_loading.h"
+#include "cmfilter/tables/table_color_map.h"
+#include "cmfilter/scene/tolerance_tables.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <memory>
+#include <sstream>
+#include <system_error>
+
+namespace cmfilter {
+
+namespace {
+
+std::string where(const Scene& scene, std::size_t surface, const std::string& key)
+{
+    return scene.path + ": /surfaces/" + std::to_string(surface) + "/material/" + key + ": ";
+}
+
+// A colour map and a driver to load: a plain material's, or a microsurface
+// material's base layer (keys under /material/base/).
+struct LayerSource {
+    const Scene& scene;
+    std::size_t i;
+    const ColorMapSource& colormap;
+    const DriverSource& driver;
+    std::string root;  // "" or "base/"
+    std::string where(const std::string& key) const { return cmfilter::where(scene, i, root + key); }
+};
+
+LayerSource material_layer(const Scene& scene, std::size_t i)
+{
+    const Material& material = scene.surfaces[i].material;
+    return {scene, i, material.colormap, material.driver, ""};
+}
+
+Error located(const Error& e, const std::string& prefix) { return {e.kind, prefix + e.message}; }
+
+// A gradient image laid over [vmin, vmax].
+ColorMapLoadOptions gradient_load_options(const std::string& path, double vmin, double vmax, WrapMode wrap,
+                                          const std::string& colorspace)
+{
+    ColorMapLoadOptions load;
+    load.path = path;
+    load.vmin = vmin;
+    load.vmax = vmax;
+    load.wrap = wrap;
+    load.colorspace = colorspace;
+    return load;
+}
+
+Status load_colormap(const LayerSource& layer, const ColorConfig& config, const MaterialOptions& options,
+                     SurfaceMaterial& m)
+{
+    const ColorMapSource& source = layer.colormap;
+    const std::string prefix = layer.where("colormap");
+    if (!source.table_path.empty()) {
+        auto loaded = read_gaussian_color_table(source.table_path);
+        if (!loaded) return located(loaded.error(), prefix);
+        TableColorMapOptions map_options;
+        map_options.table_path = source.table_path;
+        auto map = load_table_color_map(*loaded, map_options, config);
+        if (!map) return located(map.error(), prefix);
+        m.map = map->map.map;
+        m.map_path = map->map.provenance.path;
+        m.table = std::move(loaded->table);
+        m.table_path = source.table_path;
+        return ok();
+    }
+    auto map = load_color_map(gradient_load_options(source.image_path, source.domain_min, source.domain_max,
+                                                    source.wrap, source.colorspace),
+                              config);
+    if (!map) return located(map.error(), prefix);
+    m.map = std::move(map->map);
+    m.map_path = source.image_path;
+    const std::optional<double>& tolerance = options.tables.tolerance;
+    if (tolerance ? *tolerance > 0 : source.tolerance.has_value()) return ok();  // fitted later
+    GaussianColorTableOptions table_options;
+    table_options.threads = options.threads;
+    auto table = GaussianColorTable::bake(m.map, table_options);
+    if (!table) return located(table.error(), prefix);
+    m.table = std::move(*table);
+    return ok();
+}
+
+// A clamp map whose domain misses the driver's values [lo, hi] (`what` says
+// how they were measured) shows one end colour everywhere: surely the wrong
+// domain.
+Status check_domain(const LayerSource& layer, const SurfaceMaterial& m, double lo, double hi,
+                    const std::string& what)
+{
+    if (m.map.wrap != WrapMode::Clamp || !(hi < m.map.vmin || lo > m.map.vmax)) return ok();
+    std::ostringstream s;
+    s << layer.where("colormap") << "the colour map's domain [" << m.map.vmin << ", " << m.map.vmax
+      << "] does not meet the driver's values (" << what << ": [" << lo << ", " << hi << "])";
+    return bad_input(s.str());
+}
+
+Status load_noise_driver(const LayerSource& layer, const MaterialOptions& options, SurfaceMaterial& m)
+{
+    const DriverSource& driver = layer.driver;
+    const std::size_t i = layer.i;
+    const std::string prefix = layer.where("driver");
+    auto spec = parse_noise_spec(driver.noise_spec);
+    if (!spec) return located(spec.error(), prefix + "noise: ");
+    auto noise = make_noise(*spec);
+    if (!noise) return located(noise.error(), prefix + "noise: ");
+
+    std::optional<NoiseSigmaTable> table;
+    if (!driver.sigma_table_path.empty()) {
+        auto loaded = read_noise_sigma_table(driver.sigma_table_path, FootprintShape::Box);
+        if (!loaded) return located(loaded.error(), prefix + "sigma_table: ");
+        auto baked_for = parse_noise_spec(loaded->noise_spec);
+        if (!baked_for || !(*baked_for == *spec))
+            return bad_input(prefix + "sigma_table: '" + driver.sigma_table_path + "' was baked for the noise '" +
+                             loaded->noise_spec + "', not for '" + to_string(*spec) + "'");
+        table = std::move(loaded->table);
+    } else {
+        if (options.note)
+            options.note("baking the sigma table of " + to_string(*spec) + " (surface " + std::to_string(i) +
+                         "; name one with driver/sigma_table to skip this)");
+        NoiseSigmaBakeOptions bake_options;
+        bake_options.threads = options.threads;
+        auto bake = bake_noise_sigma(*noise, bake_options);
+        if (!bake) return located(bake.error(), prefix);
+        auto box = bake->table(FootprintShape::Box);
+        if (!box) return located(box.error(), prefix);
+        table = std::move(*box);
+        m.sigma_table_baked = true;
+    }
+
+    if (m.map.wrap == WrapMode::Clamp) {
+        const NoiseGlobalStats stats = measure_global_stats(*noise, 1 << 16, 7, options.threads);
+        if (auto st = check_domain(layer, m, stats.mean - 3 * stats.sigma, stats.mean + 3 * stats.sigma,
+                                   "mean +- 3 sigma");
+            !st)
+            return st;
+    }
+    m.noise.emplace(std::move(*noise), std::move(*table));
+    return ok();
+}
+
+// A moment pyramid (bake-moments output) and the driver it was baked from,
+// read back from its cmfilter:source and checked as apply checks it.
+Status load_moments_driver(const LayerSource& layer, const MaterialOptions& options, SurfaceMaterial& m)
+{
+    const std::string& path = layer.driver.moments_path;
+    const std::string prefix = layer.where("driver/moments");
+    auto moments = MomentTexture::open(path);
+    if (!moments) return located(moments.error(), prefix);
+    const MomentPyramidInfo& info = moments->info();
+    if (auto st = check_domain(layer, m, info.driver_min, info.driver_max, "min and max"); !st) return st;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(info.source, ec)) {
+        // The pyramid alone serves naive and gaussian; what needs level 0
+        // refuses the material with this (render, load_histograms).
+        m.driver_path = info.source;
+        m.missing_driver = prefix + "cannot read driver '" + info.source + "' recorded in '" + path +
+                           "' (cmfilter:source): no such file";
+        auto texture = FilteredTexture::create(std::move(*moments), std::nullopt);
+        if (!texture) return located(texture.error(), prefix);
+        m.texture.emplace(std::move(*texture));
+        return ok();
+    }
+    auto source = read_moment_source(info.source, path, info, options.threads);
+    if (!source) return located(source.error(), prefix);
+    if (!is_moment_source(*source, info))
+        return bad_input(prefix + moment_source_changed(info.source, *source, path, info) + "; re-bake the moments");
+    m.driver_path = info.source;  // before the moments (and info with them) move
+    auto texture = FilteredTexture::create(std::move(*moments), std::move(source->image.values));
+    if (!texture) return located(texture.error(), prefix);
+    m.texture.emplace(std::move(*texture));
+    return ok();
+}
+
+// A driver image: read once, its moment pyramid baked in process into a
+// temporary file (TextureSystem reads files) that the texture keeps.
+Status load_image_driver(const LayerSource& layer, const MaterialOptions& options, SurfaceMaterial& m)
+{
+    const std::string& path = layer.driver.image_path;
+    const std::size_t i = layer.i;
+    const std::string prefix = layer.where("driver/image");
+    MomentBakeOptions bake;
+    bake.driver_path = path;
+    bake.wrap = TextureWrap::Periodic;  // texture coordinates repeat (scene.h)
+    bake.threads = options.threads;
+    auto driver = read_driver_and_hash(bake.driver_read());
+    if (!driver) return located(driver.error(), prefix);
+    if (auto st = check_domain(layer, m, driver->image.min, driver->image.max, "min and max"); !st) return st;
+    if (options.note)
+        options.note("baking the moment pyramid of " + path + " (surface " + std::to_string(i) +
+                     "; bake it once with bake-moments --wrap periodic and name it with driver/moments to skip "
+                     "this)");
+    auto file = TemporaryFile::create("cmfilter-moments", ".exr");
+    if (!file) return located(file.error(), prefix);
+    bake.output_path = file->path();
+    auto baked = bake_moment_pyramid(bake, *driver);
+    if (!baked) return located(baked.error(), prefix);
+    auto moments = MomentTexture::open(file->path());
+    if (!moments) return located(moments.error(), prefix);
+    auto texture = FilteredTexture::create(std::move(*moments), std::move(driver->image.values),
+                                           std::make_shared<const TemporaryFile>(std::move(*file)));
+    if (!texture) return located(texture.error(), prefix);
+    m.texture.emplace(std::move(*texture));
+    m.driver_path = path;
+    m.moments_baked = true;
+    return ok();
+}
+
+// The histogram pyramid of a texture driver (render --method exact): baked
+// from the level-0 driver the texture was made from, with its wrap and
+// channel, into a temporary file that the material keeps.
+Status load_histograms(const Scene& scene, std::size_t i, const MaterialOptions& options, SurfaceMaterial& m)
+{
+    const DriverSource& driver = scene.surfaces[i].material.driver;
+    const std::string prefix =
+        where(scene, i, driver.kind == DriverKind::Moments ? "driver/moments" : "driver/image");
+    if (!m.missing_driver.empty())
+        return io_error(m.missing_driver + "; exact bakes its histograms from the driver's texels: re-bake the "
+                        "moments from the driver where it is now, or name the driver itself with driver/image");
+    const MomentPyramidInfo& moments = m.texture->moments().info();
+    HistogramBakeOptions bake;
+    bake.driver_path = m.driver_path;
+    if (driver.kind == DriverKind::Moments) bake.channel = moments.channel;
+    bake.wrap = moments.wrap;
+    bake.threads = options.threads;
+    if (options.note)
+        options.note("baking the histogram pyramid of " + m.driver_path + " (surface " + std::to_string(i) +
+                     "; --method exact)");
+    auto file = TemporaryFile::create("cmfilter-histograms", ".exr");
+    if (!file) return located(file.error(), prefix);
+    bake.output_path = file->path();
+    auto baked = bake_histogram_pyramid(bake);
+    if (!baked) return located(baked.error(), prefix);
+    auto histograms = HistogramTexture::open(file->path());
+    if (!histograms) return located(histograms.error(), prefix);
+    m.histograms_file = std::make_shared<const TemporaryFile>(std::move(*file));
+    m.histograms.emplace(std::move(*histograms));
+    return ok();
+}
+
+Status load_driver(const LayerSource& layer, const MaterialOptions& options, SurfaceMaterial& m)
+{
+    switch (layer.driver.kind) {
+    case DriverKind::Noise: return load_noise_driver(layer, options, m);
+    case DriverKind::Moments: return load_moments_driver(layer, options, m);
+    case DriverKind::Image: return load_image_driver(layer, options, m);
+    }
+    return runtime_error(layer.where("driver") + "unknown driver kind");
+}
+
+// A microsurface (sec. 5), and a clamp height map's domain checked against
+// its heights' +- 3 sigma_h.
+Status load_microsurface(const Scene& scene, std::size_t i, SurfaceMaterial& m)
+{
+    const Surface& surface = scene.surfaces[i];
+    auto micro = GaussianMicrosurface::create(*surface.material.microsurface);
+    if (!micro) return located(micro.error(), where(scene, i, "microsurface"));
+    const double sigma = micro->sigma_h();
+    if (m.height_map)
+        if (auto st = check_domain(material_layer(scene, i), m, -3 * sigma, 3 * sigma,
+                                   "the microsurface's heights, +- 3 sigma_h");
+            !st)
+            return st;
+    m.microsurface.emplace(std::move(*micro));
+    m.height_scale = 1.0 / length(surface.mapping.u_axis);
+    return ok();
+}
+
+// A textured displacement, and a clamp height map's domain checked against
+// its heights.
+Status load_displacement(const Scene& scene, std::size_t i, const MaterialOptions& options, SurfaceMaterial& m)
+{
+    const Surface& surface = scene.surfaces[i];
+    const DisplacementSource& source = *surface.material.displacement;
+    DisplacementOptions o;
+    o.path = source.image_path;
+    o.channel = source.channel;
+    o.height_scale = source.height_scale;
+    o.threads = options.threads;
+    auto texture = DisplacementTexture::load(o);
+    if (!texture) return located(texture.error(), where(scene, i, "displacement"));
+    if (m.height_map) {
+        const int n = texture->size();
+        double lo = texture->texel_height(0, 0), hi = lo;
+        for (int j = 0; j < n; ++j)
+            for (int k = 0; k < n; ++k) {
+                lo = std::min(lo, texture->texel_height(k, j));
+                hi = std::max(hi, texture->texel_height(k, j));
+            }
+        if (auto st = check_domain(material_layer(scene, i), m, lo, hi, "the displacement's heights, min and max");
+            !st)
+            return st;
+    }
+    m.displacement.emplace(std::move(*texture));
+    m.height_scale = 1.0 / length(surface.mapping.u_axis);
+    return ok();
+}
+
+// A slope colour map (sec. 5.2): a steepness gradient over degrees, or a
+// slope-vector image.
+Status load_slope_map(const Scene& scene, std::size_t i, const ColorConfig& config, SurfaceMaterial& m)
+{
+    const SlopeColorMapSource& source = *scene.surfaces[i].material.slope_colormap;
+    const std::string prefix = where(scene, i, "slope_colormap");
+    if (source.kind == SlopeMapKind::Steepness) {
+        auto map = load_color_map(gradient_load_options(source.image_path, source.domain_min, source.domain_max,
+                                                        source.wrap, source.colorspace),
+                                  config);
+        if (!map) return located(map.error(), prefix);
+        m.slope_map = SteepnessColorMap{std::move(map->map)};
+    } else {
+        SlopeVectorColorMapLoadOptions load;
+        load.path = source.image_path;
+        load.colorspace = source.colorspace;
+        load.s_max = source.max_slope;
+        auto map = load_slope_vector_color_map(load, config);
+        if (!map) return located(map.error(), prefix);
+        m.slope_map = std::move(map->map);
+    }
+    m.slope_map_path = source.image_path;
+    return ok();
+}
+
+// A base layer: C0 and its driver, loaded as a plain material's (its table
+// the default one).
+Status load_base_layer(const Scene& scene, std::size_t i, const ColorConfig& config, const MaterialOptions& options,
+                       SurfaceMaterial& m)
+{
+    const BaseLayerSource& source = *scene.surfaces[i].material.base;
+    const LayerSource layer{scene, i, source.colormap, source.driver, "base/"};
+    MaterialOptions base_options = options;
+    base_options.tables.tolerance = 0;  // the default table
+    auto base = std::make_shared<SurfaceMaterial>();
+    if (auto st = load_colormap(layer, config, base_options, *base); !st) return st;
+    if (auto st = load_driver(layer, base_options, *base); !st) return st;
+    m.base = std::move(base);
+    return ok();
+}
+
+Status refuse_noise_for_exact(const Scene& scene, std::size_t i)
+{
+    if (scene.surfaces[i].material.has_microsurface() || scene.surfaces[i].material.driver.kind != DriverKind::Noise)
+        return ok();
+    return bad_input(where(scene, i, "driver") + "exact needs a texture driver with at most " +
+                     std::to_string(kHistogramMaxValues) +
+                     " distinct values; noise drivers have no exact filtering distribution");
+}
+
+}  // namespace
+
+Expected<std::vector<SurfaceMaterial>> prepare_materials(const Scene& scene, const ColorConfig& config,
+                                                         const MaterialOptions& options)
+{
+    std::vector<SurfaceMaterial> materials(scene.surfaces.size());
+    for (std::size_t i = 0; i < scene.surfaces.size(); ++i) {
+        const Material& material = scene.surfaces[i].material;
+        SurfaceMaterial& m = materials[i];
+        m.height_map = material.has_microsurface() && material.has_colormap();
+        if (material.has_colormap())
+            if (auto st = load_colormap(material_layer(scene, i), config, options, m); !st) return st.error();
+        if (options.histograms)
+            if (auto st = refuse_noise_for_exact(scene, i); !st) return st.error();
+        if (material.has_microsurface()) {
+            if (auto st = material.microsurface ? load_microsurface(scene, i, m) : load_displacement(scene, i, options, m);
+                !st)
+                return st.error();
+            if (material.slope_colormap)
+                if (auto st = load_slope_map(scene, i, config, m); !st) return st.error();
+            if (material.base)
+                if (auto st = load_base_layer(scene, i, config, options, m); !st) return st.error();
+            m.combine = material.combine;
+            if (!m.height_map) continue;  // no table of its own
+        } else {
+            if (auto st = load_driver(material_layer(scene, i), options, m); !st) return st.error();
+            if (options.histograms)
+                if (auto st = load_histograms(scene, i, options, m); !st) return st.error();
+        }
+        TableChoiceOptions tables = options.tables;
+        tables.threads = options.threads;
+        if (auto st = choose_surface_table(scene, i, materials[i], tables); !st) return st.error();
+    }
+    return materials;
+}
+
+bool exact_filterable(const std::vector<SurfaceMaterial>& materials)
+{
+    for (const SurfaceMaterial& m : materials)
+        if (!m.layered() &&  // a microsurface's <C_h, D_h> is exact without histograms (height_color.h)
+            (!m.texture || !m.texture->has_level0() ||
+             m.texture->distinct_values() > static_cast<std::size_t>(kHistogramMaxValues)))
+            return false;
+    return true;
+}
+
+Status prepare_histograms(const Scene& scene, std::vector<SurfaceMaterial>& materials, const MaterialOptions& options)
+{
+    if (materials.size() != scene.surfaces.size())
+        return bad_input("histograms: " + std::to_string(materials.size()) + " materials for " +
+                         std::to_string(scene.surfaces.size()) + " surfaces");
+    for (std::size_t i = 0; i < materials.size(); ++i) {
+        if (materials[i].histograms || materials[i].layered()) continue;
+        if (auto st = refuse_noise_for_exact(scene, i); !st) return st;
+        if (auto st = load_histograms(scene, i, options, materials[i]); !st) return st;
+    }
+    return ok();
+}
+
+}  // namespace cmfilter

@@ -1,0 +1,87 @@
+#include "cmfilter/scene/tolerance_tables.h"
+
+#include "cmfilter/scene/driver_sigma_range.h"
+#include "cmfilter/tables/plain_lookup.h"
+#include "cmfilter/tables/table_size_search.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace cmfilter {
+
+namespace {
+
+Error located(const Scene& scene, std::size_t surface, const Error& e)
+{
+    return {e.kind, scene.path + ": /surfaces/" + std::to_string(surface) + "/material/colormap: " + e.message};
+}
+
+Status check_optional(const std::optional<double>& value, const char* name, const char* expected)
+{
+    if (value && !(std::isfinite(*value) && *value >= 0)) {
+        std::ostringstream msg;
+        msg << name << " " << *value << " is invalid (expected " << expected << ")";
+        return bad_input(msg.str());
+    }
+    return ok();
+}
+
+}  // namespace
+
+Status choose_surface_table(const Scene& scene, std::size_t surface, SurfaceMaterial& material,
+                            const TableChoiceOptions& options)
+{
+    if (auto st = check_optional(options.tolerance, "--tolerance", "a CIEDE2000 difference > 0"); !st) return st;
+    if (auto st = check_optional(options.plain_bound, "--shortcut", "a CIEDE2000 difference >= 0; 0 turns it off");
+        !st)
+        return st;
+    if (surface >= scene.surfaces.size())
+        return bad_input(scene.path + ": surface " + std::to_string(surface) + " does not exist");
+    const std::optional<double> tolerance =
+        options.tolerance ? (*options.tolerance > 0 ? options.tolerance : std::nullopt)
+                          : scene.surfaces[surface].material.colormap.tolerance;
+
+    TableFit fit;
+    if (tolerance) {
+        auto range = largest_surface_sigma(scene, surface, options.threads);
+        if (!range) return range.error();
+        TableSizeSearchOptions search;
+        search.tolerance = *tolerance;
+        search.quantile = options.quantile;
+        search.sigma_max = range->sigma_max;
+        search.seed = options.seed;
+        search.threads = options.threads;
+        auto found = find_smallest_table(material.map, search);
+        if (!found) return located(scene, surface, found.error());
+        material.table = std::move(found->table);
+        fit.tolerance = *tolerance;
+        fit.statistic = quantile_name(options.quantile);
+        fit.error = found->error;
+        fit.sigma_max = range->sigma_max;
+        fit.sigma_max_how = range->how;
+        fit.candidates = static_cast<int>(found->trials.size());
+    }
+    fit.plain_bound = options.plain_bound ? *options.plain_bound : tolerance ? kPlainLookupFraction * *tolerance : 0.0;
+    material.plain = PlainLookupSigma();
+    if (fit.plain_bound > 0) {
+        PlainLookupOptions plain;
+        plain.bound = fit.plain_bound;
+        plain.sigma_cap = material.table.axes().sigma_max;
+        plain.threads = options.threads;
+        auto sigma = plain_lookup_sigma(material.map, plain);
+        if (!sigma) return located(scene, surface, sigma.error());
+        material.plain = std::move(*sigma);
+    }
+    material.fit = std::move(fit);
+    return ok();
+}
+
+Status choose_surface_tables(const Scene& scene, std::vector<SurfaceMaterial>& materials,
+                             const TableChoiceOptions& options)
+{
+    for (std::size_t i = 0; i < materials.size(); ++i)
+        if (auto st = choose_surface_table(scene, i, materials[i], options); !st) return st;
+    return ok();
+}
+
+}  // namespace cmfilter

@@ -1,0 +1,93 @@
+#include "cmfilter/texture/box_pyramid_file.h"
+
+#include "cmfilter/texture/box_pyramid.h"
+#include "cmfilter/util/stopwatch.h"
+
+#include <algorithm>
+#include <future>
+
+namespace cmfilter {
+
+Expected<BoxPyramidFileTimes> write_box_pyramid_file(const BoxPyramidFileOptions& options,
+                                                     const BoxPyramidRowFill& fill)
+{
+    const int W = options.width, H = options.height;
+    const int C = static_cast<int>(options.channel_names.size());
+    const auto progress = [&](double f) {
+        if (options.progress) options.progress(f);
+    };
+    OIIO::ImageSpec spec(W, H, C, OIIO::TypeDesc::FLOAT);
+    spec.channelnames = options.channel_names;
+    spec.tile_width = spec.tile_height = options.tile_size;
+    spec.tile_depth = 1;
+    spec.attribute("compression", options.compression);
+    spec.attribute("textureformat", "Plain Texture");
+    spec.attribute("openexr:levelmode", 1);     // MIPMAP_LEVELS
+    spec.attribute("openexr:roundingmode", 0);  // ROUND_DOWN: level k is max(1, W >> k)
+    if (options.set_metadata) options.set_metadata(spec);
+    auto writer = OIIO::ImageOutput::create(options.path);
+    if (!writer) return runtime_error("OpenImageIO cannot write EXR: " + OIIO::geterror());
+    if (!writer->supports("mipmap") || !writer->supports("tiles"))
+        return runtime_error("OpenImageIO's EXR writer cannot write tiled MIP-maps");
+    const auto write_failed = [&]() -> Error {
+        return io_error("cannot write '" + options.name + "': " + writer->geterror());
+    };
+    if (!writer->open(options.path, spec)) return write_failed();
+
+    BoxPyramidFileTimes times;
+    BoxPyramidAccumulator upper(W, H, C, options.threads);
+    const int tile = options.tile_size;
+    const int tile_rows = std::min(tile, H);
+    std::vector<float> level0[2];
+    for (auto& b : level0) b.resize(static_cast<std::size_t>(W) * tile_rows * C);
+    std::future<bool> pending;  // the tile row being written
+    const auto wait_pending = [&]() {
+        if (!pending.valid()) return true;
+        const Stopwatch t;
+        const bool ok = pending.get();
+        times.write_ms += t.elapsed_ms();  // the time the build waited for the writer
+        return ok;
+    };
+    for (int y0 = 0, n = 0; y0 < H; y0 += tile, n ^= 1) {
+        const int y1 = std::min(H, y0 + tile);
+        float* rows = level0[n].data();
+        const Stopwatch t;
+        upper.add_rows(y0, y1, [&](int y, int thread, double* planes) {
+            fill(y, thread, planes);
+            float* dst = rows + static_cast<std::size_t>(y - y0) * W * C;
+            for (int c = 0; c < C; ++c) {
+                const double* src = planes + static_cast<std::size_t>(c) * W;
+                for (int x = 0; x < W; ++x) dst[static_cast<std::size_t>(x) * C + c] = static_cast<float>(src[x]);
+            }
+        });
+        times.build_ms += t.elapsed_ms();
+        // The previous row must be out before this one is handed over (one
+        // writer, rows in order); its buffer is the one the next row fills.
+        if (!wait_pending()) return write_failed();
+        pending = std::async(std::launch::async, [&writer, W, y0, y1, rows]() {
+            return writer->write_tiles(0, W, y0, y1, 0, 1, OIIO::TypeDesc::FLOAT, rows);
+        });
+        progress(0.9 * y0 / H);
+    }
+    if (!wait_pending()) return write_failed();
+    for (auto& b : level0) b = {};
+
+    const Stopwatch t;
+    for (int k = 1; k < upper.levels(); ++k) {
+        OIIO::ImageSpec level = spec;
+        level.width = level.full_width = upper.level_width(k);
+        level.height = level.full_height = upper.level_height(k);
+        const std::vector<float> texels = upper.take_level(k);
+        // The whole level in one call: fewer waits for a call's last tiles.
+        if (!writer->open(options.path, level, OIIO::ImageOutput::AppendMIPLevel) ||
+            !writer->write_tiles(0, level.width, 0, level.height, 0, 1, OIIO::TypeDesc::FLOAT, texels.data()))
+            return write_failed();
+        progress(0.9 + 0.1 * k / (upper.levels() - 1));
+    }
+    if (!writer->close()) return write_failed();
+    times.write_ms += t.elapsed_ms();
+    progress(1.0);
+    return times;
+}
+
+}  // namespace cmfilter

@@ -1,0 +1,71 @@
+#include "cmfilter/texture/texture_lod.h"
+
+#include "cmfilter/texture/moment_pyramid.h"
+
+#include <OpenImageIO/texture.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace cmfilter {
+
+Status check_tiled_mipmap(OIIO::ImageInput& in, int levels, const std::string& path)
+{
+    int found = 0;
+    while (in.seek_subimage(0, found)) ++found;
+    if (found != levels || in.spec(0, 0).tile_width <= 0)
+        return bad_input("'" + path + "' is not a tiled MIP-map with the " + std::to_string(levels) +
+                         " levels its metadata names (found " + std::to_string(found) + ")");
+    return ok();
+}
+
+std::shared_ptr<OIIO::TextureSystem> make_private_texture_system()
+{
+    return std::shared_ptr<OIIO::TextureSystem>(
+        OIIO::TextureSystem::create(false),
+        [](OIIO::TextureSystem* ts) { OIIO::TextureSystem::destroy(ts, true); });
+}
+
+int reachable_texture_levels(int width, int height, int levels)
+{
+    int k = 0;
+    while (k + 1 < levels &&
+           std::min(moment_level_extent(width, k), moment_level_extent(height, k)) > 1)
+        ++k;
+    return k + 1;
+}
+
+TextureLod texture_lod(int width, int height, int levels, float lod)
+{
+    // TextureSystem (OpenImageIO 2.4, trilinear) picks levels from the filter
+    // width fw in texture units: at level m it takes fw_m = fw * min(w_m, h_m)
+    // and, at the first m with fw_m <= 1, blends level m - 1 with weight
+    // 1 - (2 fw_m - 1) and level m with weight 2 fw_m - 1 (checked by
+    // tests/unit/test_moment_pyramid.cpp). So fw = 1 / min(w_k, h_k) reads
+    // level k alone, and fw = (1 + frac) / (2 min(w_k+1, h_k+1)) blends levels
+    // k and k + 1 with weights 1 - frac and frac: linear in lod.
+    const int top = reachable_texture_levels(width, height, levels) - 1;
+    TextureLod out;
+    out.lod = std::isfinite(lod) ? std::clamp(lod, 0.0f, static_cast<float>(top)) : 0.0f;
+    const int k = static_cast<int>(std::floor(out.lod));
+    const float frac = out.lod - static_cast<float>(k);
+    const auto minwh = [&](int level) {
+        return static_cast<float>(
+            std::min(moment_level_extent(width, level), moment_level_extent(height, level)));
+    };
+    if (frac > 0) {
+        out.filter_width = (1.0f + frac) / (2.0f * minwh(k + 1));
+    } else {
+        out.filter_width = 1.0f / minwh(k);
+        if (out.filter_width * minwh(k) > 1.0f)
+            out.filter_width = std::nextafter(out.filter_width, 0.0f);  // stay on level k
+    }
+    return out;
+}
+
+double trilinear_lod_for_box(double box_lod)
+{
+    return box_lod - 0.5 * std::log2(3.0);
+}
+
+}  // namespace cmfilter
