@@ -1,0 +1,106 @@
+# apply: a driver's moments filtered through a colour table into an image. Its
+# inputs are baked by cli.apply.setup (CMakeLists.txt), fixture apply_inputs.
+
+# cmfilter_apply_case(NAME ... EXIT ... [STDERR ...] [STDOUT ...] [ABSENT ...] COMMAND args after "apply")
+function(cmfilter_apply_case)
+  cmake_parse_arguments(A "" "NAME" "" ${ARGN})
+  cmfilter_cli_case(NAME apply.${A_NAME} ${A_UNPARSED_ARGUMENTS})
+  set_tests_properties(cli.apply.${A_NAME} PROPERTIES FIXTURES_REQUIRED "cli_dirs;cli_fixtures;apply_inputs")
+endfunction()
+cmfilter_cli_case(NAME help.apply EXIT 0 STDOUT "--histograms" COMMAND ${CMF} apply --help)
+
+# --- apply: bad input, each with its exit code, message and no output ----------
+set(A ${OUT}/bad-apply.exr)
+cmfilter_apply_case(NAME bad.not-moments EXIT 3
+                    STDERR "^cmfilter apply: error: '.*apply-table\\.exr' is not a cmfilter moment pyramid \\(cmfilter:kind is 'gaussian-color-table', expected 'moment-pyramid'\\)"
+                    ABSENT ${A} COMMAND ${CMF} apply --moments ${AT} --table ${AT} --lod 0 -o ${A})
+cmfilter_apply_case(NAME bad.moments-not-an-image EXIT 3 STDERR "not-an-image\\.png' is not an image OpenImageIO can read"
+                    ABSENT ${A} COMMAND ${CMF} apply --moments ${FIX}/not-an-image.png --table ${AT} --lod 0 -o ${A})
+cmfilter_apply_case(NAME bad.moments-missing EXIT 2 STDERR "cannot read '.*no-such-moments\\.exr': no such file"
+                    ABSENT ${A} COMMAND ${CMF} apply --moments ${FIX}/no-such-moments.exr --table ${AT} --lod 0 -o ${A})
+cmfilter_apply_case(NAME bad.not-a-table EXIT 3
+                    STDERR "apply-moments\\.exr' is not a cmfilter colour table \\(cmfilter:kind is 'moment-pyramid', expected 'gaussian-color-table'\\)"
+                    ABSENT ${A} COMMAND ${CMF} apply --moments ${AM} --table ${AM} --lod 0 -o ${A})
+cmfilter_apply_case(NAME bad.domain-no-overlap EXIT 3
+                    STDERR "the driver range \\[5, 5\\.9375\\] of '.*apply-far-moments\\.exr' does not overlap the domain \\[0, 1\\] of table '.*apply-table\\.exr'"
+                    ABSENT ${A} COMMAND ${CMF} apply --moments ${OUT}/apply-far-moments.exr --table ${AT} --lod 0 -o ${A})
+cmfilter_apply_case(NAME bad.driver-missing EXIT 2
+                    STDERR "cannot read driver 'apply-gone-driver\\.exr' recorded in '.*apply-gone-moments\\.exr' \\(cmfilter:source\\): no such file; pass --driver PATH"
+                    ABSENT ${A} COMMAND ${CMF} apply --moments ${OUT}/apply-gone-moments.exr --table ${AT} --lod 0
+                                        --method reference -o ${A})
+cmfilter_apply_case(NAME bad.map-missing EXIT 2
+                    STDERR "cannot read colour map 'apply-gone-map\\.exr' recorded in '.*apply-gone-table\\.exr' \\(cmfilter:source\\): no such file; pass --map PATH"
+                    ABSENT ${A} COMMAND ${CMF} apply --moments ${AM} --table ${OUT}/apply-gone-table.exr --lod 0
+                                        --method naive -o ${A})
+cmfilter_apply_case(NAME bad.map-override-missing EXIT 2 STDERR "cannot read '.*no-such\\.exr': no such file"
+                    ABSENT ${A} COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod 0 --method naive
+                                        --map ${FIX}/no-such.exr -o ${A})
+cmfilter_apply_case(NAME bad.output-directory-missing EXIT 2
+                    STDERR "cannot write '.*no-such-dir/a\\.exr': directory '.*no-such-dir' does not exist"
+                    ABSENT ${OUT}/no-such-dir/a.exr
+                    COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod 0 -o ${OUT}/no-such-dir/a.exr)
+cmfilter_apply_case(NAME bad.output-extension EXIT 3
+                    STDERR "output '.*a\\.tif' has the wrong extension \\(expected \\.exr, \\.png, \\.jpg or \\.jpeg\\)"
+                    ABSENT ${OUT}/a.tif COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod 0 -o ${OUT}/a.tif)
+foreach(size 0x4 12 4x-3 axb)
+  cmfilter_apply_case(NAME bad.size-${size} EXIT 3
+                      STDERR "--size '${size}' is not a size \\(expected WxH, two integers 1\\.\\.65536\\)"
+                      ABSENT ${A} COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod 0 --size ${size} -o ${A})
+endforeach()
+cmfilter_apply_case(NAME bad.unknown-method EXIT 3
+                    STDERR "unknown method 'box' \\(expected naive, gaussian, exact or reference\\)"
+                    ABSENT ${A} COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod 0 --method box -o ${A})
+cmfilter_apply_case(NAME bad.exact-without-histograms EXIT 3
+                    STDERR "--method exact needs --histograms H\\.exr"
+                    ABSENT ${A} COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod 0 --method exact -o ${A})
+cmfilter_apply_case(NAME usage.lod-not-a-number EXIT 1 STDERR "^cmfilter apply: error: .*--lod"
+                    ABSENT ${A} COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod one -o ${A})
+cmfilter_apply_case(NAME usage.missing-lod EXIT 1 STDERR "^cmfilter apply: error: .*--lod is required"
+                    ABSENT ${A} COMMAND ${CMF} apply --moments ${AM} --table ${AT} -o ${A})
+
+# --- apply: warnings (exit 0) and outputs --------------------------------------
+# The driver reaches [-0.0998, 1.0999]: 110 of its 1024 texels lie outside [0, 1].
+cmfilter_apply_case(NAME warn.partial-overlap EXIT 0
+                    STDERR "warning: 110 of the driver's texels \\(10\\.7421875%\\) lie outside the domain \\[0, 1\\]"
+                    COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod 2 -o ${OUT}/apply-partial.exr)
+cmfilter_apply_case(NAME warn.lod-below EXIT 0
+                    STDERR "warning: --lod -1 is outside \\[0, 5\\] for '.*apply-moments\\.exr' \\(32 x 32\\); clamped to 0"
+                    STDOUT "gaussian, 32 x 32 at lod 0 \\(asked -1\\)"
+                    COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod=-1 -o ${OUT}/apply-below.exr)
+cmfilter_apply_case(NAME warn.lod-above EXIT 0 STDERR "warning: --lod 9\\.5 is outside \\[0, 5\\].*clamped to 5"
+                    STDOUT "1 x 1 at lod 5"
+                    COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod 9.5 -o ${OUT}/apply-above.exr)
+cmfilter_apply_case(NAME warn.map-hash EXIT 0
+                    STDERR "warning: colour map '.*ramp\\.png' \\(sha256 [0-9a-f]+\\) is not the file '.*apply-table\\.exr' was baked from"
+                    COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod 1 --method naive --map ${FIX}/ramp.png
+                            -o ${OUT}/apply-other-map.exr)
+cmfilter_apply_case(NAME driver-override EXIT 0 STDOUT "driver +.*apply-driver\\.exr"
+                    COMMAND ${CMF} apply --moments ${OUT}/apply-gone-moments.exr --table ${AT} --lod 1
+                            --method reference --driver ${FIX}/apply-driver.exr -o ${OUT}/apply-override.exr)
+cmfilter_apply_case(NAME map-override EXIT 0 STDOUT "map +.*apply-map\\.exr"
+                    COMMAND ${CMF} apply --moments ${AM} --table ${OUT}/apply-gone-table.exr --lod 1
+                            --method naive --map ${FIX}/apply-map.exr -o ${OUT}/apply-map-override.exr)
+cmfilter_apply_case(NAME png-size EXIT 0 STDOUT "wrote .*apply\\.png: gaussian, 20 x 12 at lod 1\\.5"
+                    COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod 1.5 --size 20x12 -o ${OUT}/apply.png)
+set_tests_properties(cli.apply.png-size PROPERTIES FIXTURES_SETUP apply_png)
+add_test(NAME cli.apply.png-info COMMAND ${OIIOTOOL} --info ${OUT}/apply.png)
+set_tests_properties(cli.apply.png-info PROPERTIES FIXTURES_REQUIRED apply_png LABELS cli
+    PASS_REGULAR_EXPRESSION "20 x +12, 3 channel, uint8 png")
+cmfilter_apply_case(NAME jpeg EXIT 0 STDOUT "wrote .*apply\\.jpg: naive, 8 x 8 at lod 2"
+                    COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod 2 --method naive -o ${OUT}/apply.jpg)
+cmfilter_apply_case(NAME json EXIT 0 STDOUT "\"sigma_clamped\": [0-9]+"
+                    COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod 3 --json -o ${OUT}/apply-json.exr)
+cmfilter_apply_case(NAME info EXIT 0 STDOUT "filtered-image"
+                    COMMAND ${CMF} info ${OUT}/apply-partial.exr)
+set_tests_properties(cli.apply.info PROPERTIES DEPENDS cli.apply.warn.partial-overlap)
+
+# The done-when check: reference against oiiotool --colormap + maketx --filter box.
+find_program(MAKETX_CLI maketx)
+if(MAKETX_CLI)
+  add_test(NAME cli.apply.reference-vs-oiiotool-maketx
+           COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/check_apply_vs_oiiotool.sh ${CMF} ${OIIOTOOL} ${MAKETX_CLI} ${FIX} ${OUT})
+  set_tests_properties(cli.apply.reference-vs-oiiotool-maketx PROPERTIES FIXTURES_REQUIRED cli_fixtures
+                       LABELS cli ENVIRONMENT "OCIO=")
+else()
+  message(STATUS "maketx not found: cli.apply.reference-vs-oiiotool-maketx is not registered")
+endif()

@@ -1,0 +1,51 @@
+# bench: speed against accuracy on scenes.
+cmfilter_cli_case(NAME help.bench EXIT 0 STDOUT "--reference-spp" COMMAND ${CMF} bench --help)
+
+cmfilter_cli_case(NAME bench.small EXIT 0 STDOUT "wrote .*bench\\.csv: 1 scene"
+                  COMMAND ${CMF} bench ${SC}/good.json --csv ${OUT}/bench.csv --charts ${OUT}
+                          --resolution 24x14 --repeats 1)
+set_tests_properties(cli.bench.small PROPERTIES FIXTURES_SETUP bench_csv)
+add_test(NAME cli.bench.csv-rows COMMAND grep -c "good.json," ${OUT}/bench.csv)
+set_tests_properties(cli.bench.csv-rows PROPERTIES FIXTURES_REQUIRED bench_csv LABELS cli
+    PASS_REGULAR_EXPRESSION "^21\n")
+add_test(NAME cli.bench.chart COMMAND ${CMAKE_COMMAND} -E cat ${OUT}/good.png)
+set_tests_properties(cli.bench.chart PROPERTIES FIXTURES_REQUIRED bench_csv LABELS cli)
+# exact runs on a scene whose driver has four values (one row), and is left
+# out on the noise scene above (17 rows).
+cmfilter_cli_case(NAME bench.texture-exact EXIT 0 STDOUT "wrote .*bench-texture\\.csv: 1 scene"
+                  COMMAND ${CMF} bench ${SCB}/texture-quantised.json --csv ${OUT}/bench-texture.csv
+                          --resolution 16x9 --repeats 1)
+set_tests_properties(cli.bench.texture-exact PROPERTIES FIXTURES_SETUP bench_texture_csv)
+add_test(NAME cli.bench.texture-exact-row COMMAND grep -c ",exact,exact,1,,,,rms,0," ${OUT}/bench-texture.csv)
+set_tests_properties(cli.bench.texture-exact-row PROPERTIES FIXTURES_REQUIRED bench_texture_csv LABELS cli
+    PASS_REGULAR_EXPRESSION "^1\n")
+add_test(NAME cli.bench.texture-summary COMMAND python3 ${PROJECT_SOURCE_DIR}/tests/bench/render_bench_summary.py
+                                                ${OUT}/bench-texture.csv)
+set_tests_properties(cli.bench.texture-summary PROPERTIES FIXTURES_REQUIRED bench_texture_csv LABELS cli
+    PASS_REGULAR_EXPRESSION "texture-quantised\\.json \\| [0-9.]+ \\([0-9.]+ / [0-9.]+ / [0-9.]+\\) \\| [0-9.]+ \\|")
+cmfilter_cli_case(NAME bench.no-edge-coverage EXIT 0 STDOUT "wrote .*bench-no-edges\\.csv: 1 scene"
+                  COMMAND ${CMF} bench ${SC}/good.json --csv ${OUT}/bench-no-edges.csv --no-edge-coverage
+                          --resolution 16x9 --repeats 1)
+cmfilter_cli_case(NAME bench.bad.reference-spp EXIT 3 STDERR "--reference-spp 100 is out of range"
+                  ABSENT ${OUT}/bench-bad.csv
+                  COMMAND ${CMF} bench ${SC}/good.json --csv ${OUT}/bench-bad.csv --reference-spp 100)
+cmfilter_cli_case(NAME bench.bad.reference-repeat EXIT 3 STDERR "--reference-repeat -0.5.* is out of range"
+                  ABSENT ${OUT}/bench-bad.csv
+                  COMMAND ${CMF} bench ${SC}/good.json --csv ${OUT}/bench-bad.csv --reference-repeat -0.5)
+cmfilter_cli_case(NAME bench.bad.max-reference-spp EXIT 3 STDERR "--max-reference-spp 1500 is out of range"
+                  ABSENT ${OUT}/bench-bad.csv
+                  COMMAND ${CMF} bench ${SC}/good.json --csv ${OUT}/bench-bad.csv --reference-spp 2048
+                          --max-reference-spp 1500)
+cmfilter_cli_case(NAME bench.bad.only EXIT 3 STDERR "configuration 'gaussian 7x7 sqrt' is unknown .*'naive'"
+                  ABSENT ${OUT}/bench-bad.csv
+                  COMMAND ${CMF} bench ${SC}/good.json --csv ${OUT}/bench-bad.csv --only "naive,gaussian 7x7 sqrt")
+cmfilter_cli_case(NAME bench.only EXIT 0 STDOUT "wrote .*bench-only\\.csv: 1 scene"
+                  COMMAND ${CMF} bench ${SC}/good.json --csv ${OUT}/bench-only.csv --resolution 24x14 --repeats 1
+                          --only "supersample 4,naive")
+set_tests_properties(cli.bench.only PROPERTIES FIXTURES_SETUP bench_only_csv)
+add_test(NAME cli.bench.only-rows COMMAND grep -c "good.json,\\(naive\\|supersample 4\\)," ${OUT}/bench-only.csv)
+set_tests_properties(cli.bench.only-rows PROPERTIES FIXTURES_REQUIRED bench_only_csv LABELS cli
+    PASS_REGULAR_EXPRESSION "^2\n")
+cmfilter_cli_case(NAME bench.bad.charts-folder EXIT 2 STDERR "--charts '.*no-such-dir' is not a folder"
+                  ABSENT ${OUT}/bench-bad.csv
+                  COMMAND ${CMF} bench ${SC}/good.json --csv ${OUT}/bench-bad.csv --charts ${OUT}/no-such-dir)

@@ -1,0 +1,204 @@
+# render: a scene file rendered per pixel.
+cmfilter_cli_case(NAME help.render EXIT 0 STDOUT "--footprint" COMMAND ${CMF} render --help)
+
+set(RO ${OUT}/render-bad.png)
+cmfilter_cli_case(NAME render.gaussian EXIT 0 STDOUT "32 x 18, gaussian, 1 ray\\(s\\) per pixel"
+                  COMMAND ${CMF} render ${SC}/good.json --method gaussian -o ${OUT}/render-gaussian.png)
+cmfilter_cli_case(NAME render.supersample-json EXIT 0 STDOUT "\"samples\": 4"
+                  COMMAND ${CMF} render ${SC}/good.json --method supersample --spp 4 --json
+                          -o ${OUT}/render-ss.exr --aov ${OUT}/render-ss)
+cmfilter_cli_case(NAME render.edge-coverage-json EXIT 0 STDOUT "\"edge_coverage\": true"
+                  COMMAND ${CMF} render ${SC}/good.json --method naive --json -o ${OUT}/render-edges.exr)
+cmfilter_cli_case(NAME render.no-edge-coverage-json EXIT 0 STDOUT "\"edge_coverage\": false"
+                  COMMAND ${CMF} render ${SC}/good.json --method gaussian --no-edge-coverage --json
+                          -o ${OUT}/render-no-edges.exr)
+cmfilter_cli_case(NAME render.bad.malformed-json EXIT 3 STDERR "malformed.json: malformed JSON at line [0-9]+, column"
+                  ABSENT ${RO} COMMAND ${CMF} render ${SC}/malformed.json -o ${RO})
+cmfilter_cli_case(NAME render.bad.unknown-key EXIT 3 STDERR "/camera/fovv: unknown key"
+                  ABSENT ${RO} COMMAND ${CMF} render ${SC}/unknown-key.json -o ${RO})
+cmfilter_cli_case(NAME render.bad.missing-file EXIT 3 STDERR "/surfaces/0/material/driver/sigma_table: .*no-such-table\\.exr"
+                  ABSENT ${RO} COMMAND ${CMF} render ${SC}/missing-file.json -o ${RO})
+cmfilter_cli_case(NAME render.bad.scene-missing EXIT 2 STDERR "no-such-scene\\.json"
+                  ABSENT ${RO} COMMAND ${CMF} render ${SC}/no-such-scene.json -o ${RO})
+cmfilter_cli_case(NAME render.bad.camera-nowhere EXIT 3 STDERR "camera-nowhere.json: /camera"
+                  ABSENT ${RO} COMMAND ${CMF} render ${SC}/camera-nowhere.json -o ${RO})
+cmfilter_cli_case(NAME render.bad.resolution-zero EXIT 3 STDERR "/camera/resolution"
+                  ABSENT ${RO} COMMAND ${CMF} render ${SC}/resolution-zero.json -o ${RO})
+cmfilter_cli_case(NAME render.bad.resolution-absurd EXIT 3 STDERR "/camera/resolution.*16384"
+                  ABSENT ${RO} COMMAND ${CMF} render ${SC}/resolution-absurd.json -o ${RO})
+cmfilter_cli_case(NAME render.bad.spp-zero EXIT 3 STDERR "--spp 0 is out of range"
+                  ABSENT ${RO} COMMAND ${CMF} render ${SC}/good.json --method supersample --spp 0 -o ${RO})
+cmfilter_cli_case(NAME render.bad.method EXIT 3 STDERR "method 'exact-ish' is unknown"
+                  ABSENT ${RO} COMMAND ${CMF} render ${SC}/good.json --method exact-ish -o ${RO})
+cmfilter_cli_case(NAME render.bad.footprint EXIT 3 STDERR "footprint width 'wide' is unknown"
+                  ABSENT ${RO} COMMAND ${CMF} render ${SC}/good.json --footprint wide -o ${RO})
+cmfilter_cli_case(NAME render.bad.table-range EXIT 3 STDERR "domain \\[5, 6\\] does not meet the driver's values"
+                  ABSENT ${RO} COMMAND ${CMF} render ${SC}/domain-off-driver.json -o ${RO})
+cmfilter_cli_case(NAME render.bad.sigma-table-other-noise EXIT 3 STDERR "was baked for the noise 'fbm:base=gradient"
+                  ABSENT ${RO} COMMAND ${CMF} render ${SC}/sigma-table-other-noise.json -o ${RO})
+# Texture drivers: a driver image (its moments baked in process) and moment
+# pyramids from the apply inputs, in scenes written here with their paths.
+cmfilter_cli_case(NAME render.texture-image-gaussian EXIT 0 STDOUT "32 x 18, gaussian, 1 ray\\(s\\) per pixel, [0-9]+ pixels"
+                  COMMAND ${CMF} render ${SC}/texture-driver.json --method gaussian -o ${OUT}/render-texture-gaussian.png
+                          --aov ${OUT}/render-texture-gaussian)
+cmfilter_cli_case(NAME render.texture-image-reference EXIT 0 STDOUT "\"samples\": 1024"
+                  COMMAND ${CMF} render ${SC}/texture-driver.json --method reference --json
+                          -o ${OUT}/render-texture-reference.exr)
+cmfilter_cli_case(NAME render.moments-gaussian EXIT 0 STDOUT "32 x 18, gaussian"
+                  COMMAND ${CMF} render ${SCB}/moments.json --method gaussian -o ${OUT}/render-moments-gaussian.png)
+cmfilter_cli_case(NAME render.moments-supersample EXIT 0 STDOUT "32 x 18, supersample, 4 ray"
+                  COMMAND ${CMF} render ${SCB}/moments.json --method supersample --spp 4
+                          -o ${OUT}/render-moments-supersample.png)
+# With the recorded driver gone, naive and gaussian need only the moments;
+# supersample, reference and exact name the missing file.
+cmfilter_cli_case(NAME render.moments-source-gone-naive EXIT 0 STDOUT "32 x 18, naive"
+                  COMMAND ${CMF} render ${SCB}/moments-source-gone.json --method naive
+                          -o ${OUT}/render-moments-gone-naive.png)
+cmfilter_cli_case(NAME render.moments-source-gone-gaussian EXIT 0 STDOUT "32 x 18, gaussian"
+                  COMMAND ${CMF} render ${SCB}/moments-source-gone.json --method gaussian
+                          -o ${OUT}/render-moments-gone-gaussian.exr)
+cmfilter_cli_case(NAME render.bad.moments-source-gone EXIT 2
+                  STDERR "moments-source-gone\\.json: /surfaces/0/material/driver/moments: cannot read driver 'apply-gone-driver\\.exr' recorded in '.*apply-gone-moments\\.exr' \\(cmfilter:source\\): no such file; supersample reads the driver's texels"
+                  ABSENT ${RO} COMMAND ${CMF} render ${SCB}/moments-source-gone.json --method supersample -o ${RO})
+cmfilter_cli_case(NAME render.bad.moments-source-gone-reference EXIT 2
+                  STDERR "moments-source-gone\\.json: /surfaces/0/material/driver/moments: cannot read driver 'apply-gone-driver\\.exr' recorded in '.*apply-gone-moments\\.exr' \\(cmfilter:source\\): no such file; reference reads the driver's texels"
+                  ABSENT ${RO} COMMAND ${CMF} render ${SCB}/moments-source-gone.json --method reference -o ${RO})
+cmfilter_cli_case(NAME render.bad.moments-source-gone-exact EXIT 2
+                  STDERR "moments-source-gone\\.json: /surfaces/0/material/driver/moments: cannot read driver 'apply-gone-driver\\.exr' recorded in '.*apply-gone-moments\\.exr' \\(cmfilter:source\\): no such file; exact bakes its histograms from the driver's texels"
+                  ABSENT ${RO} COMMAND ${CMF} render ${SCB}/moments-source-gone.json --method exact -o ${RO})
+set_tests_properties(cli.render.moments-gaussian cli.render.moments-supersample cli.render.moments-source-gone-naive
+                     cli.render.moments-source-gone-gaussian cli.render.bad.moments-source-gone
+                     cli.render.bad.moments-source-gone-reference cli.render.bad.moments-source-gone-exact
+                     PROPERTIES FIXTURES_REQUIRED "cli_dirs;cli_fixtures;apply_inputs")
+# The exact method: a driver image with four values (its histograms baked in
+# process); a noise driver and a driver with 1024 values are refused.
+cmfilter_cli_case(NAME render.texture-image-exact EXIT 0 STDOUT "32 x 18, exact, 1 ray\\(s\\) per pixel, [0-9]+ pixels"
+                  COMMAND ${CMF} render ${SCB}/texture-quantised.json --method exact -o ${OUT}/render-texture-exact.png)
+cmfilter_cli_case(NAME render.bad.exact-noise EXIT 3
+                  STDERR "good\\.json: /surfaces/0/material/driver: exact needs a texture driver with at most 256 distinct values; noise drivers have no exact filtering distribution"
+                  ABSENT ${RO} COMMAND ${CMF} render ${SC}/good.json --method exact -o ${RO})
+cmfilter_cli_case(NAME render.bad.exact-too-many-values EXIT 3
+                  STDERR "moments\\.json: /surfaces/0/material/driver/moments: driver '.*apply-driver\\.exr' has 1024 distinct values"
+                  ABSENT ${RO} COMMAND ${CMF} render ${SCB}/moments.json --method exact -o ${RO})
+set_tests_properties(cli.render.bad.exact-too-many-values PROPERTIES FIXTURES_REQUIRED "cli_dirs;cli_fixtures;apply_inputs")
+cmfilter_cli_case(NAME render.bad.output-extension EXIT 3 STDERR "wrong extension"
+                  ABSENT ${OUT}/render-bad.tif COMMAND ${CMF} render ${SC}/good.json -o ${OUT}/render-bad.tif)
+# Tables fitted to a tolerance over the surface's sigma range, and the small-sigma shortcut.
+cmfilter_cli_case(NAME render.tolerance EXIT 0
+                  STDOUT "surface 0: 128 x 8 sqrt table, 12288 bytes \\(1\\.56% of 256 x 256\\), lookup CIEDE2000 p99\\.9 [0-9.]+ <= 1 over sigma \\[0, 0\\.245\\]; C0\\(mean\\) directly below sigma"
+                  COMMAND ${CMF} render ${SC}/good.json --tolerance 1 -o ${OUT}/render-tolerance.png)
+cmfilter_cli_case(NAME render.tolerance-json EXIT 0 STDOUT "\"plain\": [0-9]+"
+                  COMMAND ${CMF} render ${SC}/good.json --tolerance 1 --shortcut 0.2 --json -o ${OUT}/render-tolerance.exr)
+cmfilter_cli_case(NAME render.bad.tolerance-zero EXIT 3 STDERR "--tolerance 0 is invalid \\(expected a CIEDE2000 difference > 0\\)"
+                  ABSENT ${RO} COMMAND ${CMF} render ${SC}/good.json --tolerance 0 -o ${RO})
+cmfilter_cli_case(NAME render.bad.shortcut-negative EXIT 3 STDERR "--shortcut -1 is invalid"
+                  ABSENT ${RO} COMMAND ${CMF} render ${SC}/good.json --shortcut -1 -o ${RO})
+cmfilter_cli_case(NAME render.bad.tolerance-unreachable EXIT 3 STDERR "/surfaces/0/material/colormap: no table up to 4096 values x 1024 sigmas meets --tolerance 1e-06"
+                  ABSENT ${RO} COMMAND ${CMF} render ${SC}/good.json --tolerance 1e-6 -o ${RO})
+
+# Microsurface materials (height-correlated colour, sec. 5.1): the bundled
+# example at 32 x 24 (written beside the outputs with absolute paths) through
+# each method that filters a microsurface; the image and its AOVs must be
+# 32 x 24 with every value finite, the colours >= 0 (oiiotool --stats).
+set(MICRO_SCENE ${SCB}/microsurface-small.json)
+add_test(NAME cli.render.microsurface-scene
+         COMMAND python3 ${CMAKE_CURRENT_SOURCE_DIR}/write_small_scene.py
+                 ${EX}/plane-microsurface-sand-snow.json ${MICRO_SCENE} 32 24)
+set_tests_properties(cli.render.microsurface-scene PROPERTIES FIXTURES_SETUP microsurface_scene LABELS cli)
+set(CHECK_FINITE ${CMAKE_CURRENT_SOURCE_DIR}/check_finite_image.sh)
+foreach(method naive gaussian gaussian-exact exact)
+  set(MO ${OUT}/render-microsurface-${method})
+  cmfilter_cli_case(NAME render.microsurface-${method} EXIT 0
+                    STDOUT "32 x 24, ${method}, 1 ray\\(s\\) per pixel, [1-9][0-9]* pixels on a surface"
+                    COMMAND ${CMF} render ${MICRO_SCENE} --method ${method} -o ${MO}.exr --aov ${MO})
+  set_tests_properties(cli.render.microsurface-${method} PROPERTIES
+                       FIXTURES_REQUIRED "cli_dirs;cli_fixtures;microsurface_scene"
+                       FIXTURES_SETUP render_microsurface_${method})
+  add_test(NAME cli.render.microsurface-${method}-finite
+           COMMAND bash -c "bash $0 $1 $2.exr 32 24 --nonnegative && for f in $2.mean.exr $2.sigma.exr $2.lod.exr; do bash $0 $1 $f 32 24 || exit 1; done"
+                   ${CHECK_FINITE} ${OIIOTOOL} ${MO})
+  set_tests_properties(cli.render.microsurface-${method}-finite PROPERTIES
+                       FIXTURES_REQUIRED render_microsurface_${method} LABELS cli)
+endforeach()
+# supersample ray traces the displaced plane: its image must be as finite.
+cmfilter_cli_case(NAME render.microsurface-supersample EXIT 0
+                  STDOUT "32 x 24, supersample, 4 ray\\(s\\) per pixel, [1-9][0-9]* pixels on a surface"
+                  COMMAND ${CMF} render ${MICRO_SCENE} --method supersample --spp 4
+                          -o ${OUT}/render-microsurface-supersample.exr)
+set_tests_properties(cli.render.microsurface-supersample PROPERTIES
+                     FIXTURES_REQUIRED "cli_dirs;cli_fixtures;microsurface_scene"
+                     FIXTURES_SETUP render_microsurface_supersample)
+add_test(NAME cli.render.microsurface-supersample-finite
+         COMMAND bash ${CHECK_FINITE} ${OIIOTOOL} ${OUT}/render-microsurface-supersample.exr 32 24 --nonnegative)
+set_tests_properties(cli.render.microsurface-supersample-finite PROPERTIES
+                     FIXTURES_REQUIRED render_microsurface_supersample LABELS cli)
+# A bad microsurface names its key and writes nothing.
+cmfilter_cli_case(NAME render.bad.microsurface-sigma-h EXIT 3
+                  STDERR "microsurface-bad\\.json: /surfaces/0/material/microsurface/sigma_h: expected a number >= 0, got -0\\.008"
+                  ABSENT ${RO} COMMAND ${CMF} render ${SC}/microsurface-bad.json -o ${RO})
+
+# Masking other than the two forms is refused before anything is written.
+cmfilter_cli_case(NAME render.bad.masking EXIT 3
+                  STDERR "--masking 'sideways' is unknown \\(expected uncorrelated or correlated\\)"
+                  ABSENT ${RO} COMMAND ${CMF} render ${SC}/microsurface-too-fine.json --masking sideways -o ${RO})
+# So is a slope shading other than the two forms.
+cmfilter_cli_case(NAME render.bad.slope-shading EXIT 3
+                  STDERR "--slope-shading 'sideways' is unknown \\(expected uncorrelated or correlated\\)"
+                  ABSENT ${RO} COMMAND ${CMF} render ${SC}/slope-good.json --slope-shading sideways -o ${RO})
+# A displacement image that is not square names the key, the file and its size.
+cmfilter_cli_case(NAME render.bad.displacement-not-square EXIT 3
+                  STDERR "displacement-not-square\\.json: /surfaces/0/material/displacement: displacement '.*narrow-band\\.png' is 256 x 1 texels \\(expected a square image"
+                  ABSENT ${RO} COMMAND ${CMF} render ${SC}/displacement-not-square.json -o ${RO})
+# A microsurface whose traced tile would pass 4096 texels per side: the
+# filtered methods render it, the ray-traced ones name the key and what fits.
+cmfilter_cli_case(NAME render.bad.microsurface-too-fine EXIT 3
+                  STDERR "microsurface-too-fine\\.json: /surfaces/0/material/microsurface: reference traces one tile .*a shorter tile or a longer min_wavelength fits.*resolution 8192"
+                  ABSENT ${RO} COMMAND ${CMF} render ${SC}/microsurface-too-fine.json --method reference -o ${RO})
+
+# Slope-coloured and combined microsurface materials (secs. 5.2 and 6): a bad
+# slope map or a missing combination names its key and writes nothing; a
+# product of heights and slope vectors renders by a filtered method and by
+# the ray-traced one, finite.
+cmfilter_cli_case(NAME render.bad.slope-max-slope-on-steepness EXIT 3
+                  STDERR "slope-bad-max-slope\\.json: /surfaces/0/material/slope_colormap/max_slope: applies only to a slope-vector map \\(\"by\": \"vector\"\\)"
+                  ABSENT ${RO} COMMAND ${CMF} render ${SC}/slope-bad-max-slope.json -o ${RO})
+cmfilter_cli_case(NAME render.bad.slope-by EXIT 3
+                  STDERR "slope-bad-by\\.json: /surfaces/0/material/slope_colormap/by: expected \"steepness\" or \"vector\", got \"aspect\""
+                  ABSENT ${RO} COMMAND ${CMF} render ${SC}/slope-bad-by.json -o ${RO})
+cmfilter_cli_case(NAME render.bad.slope-not-an-image EXIT 3
+                  STDERR "slope-not-an-image\\.json: /surfaces/0/material/slope_colormap: .*good\\.json' is not an image OpenImageIO can read"
+                  ABSENT ${RO} COMMAND ${CMF} render ${SC}/slope-not-an-image.json -o ${RO})
+cmfilter_cli_case(NAME render.bad.combine-missing EXIT 3
+                  STDERR "combine-missing\\.json: /surfaces/0/material/combine: required with more than one of colormap, slope_colormap and base"
+                  ABSENT ${RO} COMMAND ${CMF} render ${SC}/combine-missing.json -o ${RO})
+# Both correlations are render's defaults, and each can be turned off: the
+# default render is the one with both named, pixel for pixel, and differs
+# from each with one turned off.
+set(DEFAULTS_OUT ${OUT}/render-defaults)
+foreach(variant "defaults" "correlated;--masking;correlated;--slope-shading;correlated"
+                "masking-off;--masking;uncorrelated" "shading-off;--slope-shading;uncorrelated")
+  list(POP_FRONT variant name)
+  set(options ${variant})
+  cmfilter_cli_case(NAME render.defaults-${name} EXIT 0 STDOUT "gaussian"
+                    COMMAND ${CMF} render ${SC}/slope-good.json --method gaussian ${options} -o ${DEFAULTS_OUT}-${name}.exr)
+  set_tests_properties(cli.render.defaults-${name} PROPERTIES FIXTURES_SETUP render_defaults_${name})
+endforeach()
+cmfilter_cli_case(NAME render.defaults-are-correlated EXIT 0 STDOUT "\"max\": 0\\.0,"
+                  COMMAND ${CMF} compare ${DEFAULTS_OUT}-defaults.exr ${DEFAULTS_OUT}-correlated.exr --json)
+set_tests_properties(cli.render.defaults-are-correlated PROPERTIES
+                     FIXTURES_REQUIRED "cli_dirs;cli_fixtures;render_defaults_defaults;render_defaults_correlated")
+foreach(name masking-off shading-off)
+  cmfilter_cli_case(NAME render.defaults-differ-${name} EXIT 0 STDOUT "\"mean\": 0\\.0*[1-9]|\"mean\": [1-9]"
+                    COMMAND ${CMF} compare ${DEFAULTS_OUT}-defaults.exr ${DEFAULTS_OUT}-${name}.exr --json)
+  set_tests_properties(cli.render.defaults-differ-${name} PROPERTIES
+                       FIXTURES_REQUIRED "cli_dirs;cli_fixtures;render_defaults_defaults;render_defaults_${name}")
+endforeach()
+foreach(method gaussian supersample)
+  set(SO ${OUT}/render-slope-${method}.exr)
+  cmfilter_cli_case(NAME render.slope-${method} EXIT 0
+                    STDOUT "24 x 16, ${method}, [0-9]+ ray\\(s\\) per pixel, [1-9][0-9]* pixels on a surface"
+                    COMMAND ${CMF} render ${SC}/slope-good.json --method ${method} --spp 4 -o ${SO})
+  set_tests_properties(cli.render.slope-${method} PROPERTIES FIXTURES_SETUP render_slope_${method})
+  add_test(NAME cli.render.slope-${method}-finite COMMAND bash ${CHECK_FINITE} ${OIIOTOOL} ${SO} 24 16 --nonnegative)
+  set_tests_properties(cli.render.slope-${method}-finite PROPERTIES FIXTURES_REQUIRED render_slope_${method} LABELS cli)
+endforeach()
