@@ -101,7 +101,7 @@ PY
 # Text with time stamps, versions and timings removed.
 normalised() {
   sed -E -e '/DateTime|cmfilter:version|Software|oiio:SHA-1/d' \
-         -e 's/"(seconds|time|elapsed[a-z_]*|[a-z_]*seconds[a-z_]*)": *[0-9.e+-]+/"\1": T/g' \
+         -e 's/"(seconds|time|elapsed[a-z_]*|[a-z_]*seconds[a-z_]*|[a-z_]*_ms)": *[0-9.e+-]+/"\1": T/g' \
          -e 's/[0-9]+\.[0-9]+ s\b/T s/g' "$1" | sed -E "s#$work/(old|new)#WORK#g"
 }
 
@@ -134,13 +134,13 @@ rows = list(csv.reader(open(sys.argv[1])))
 keep = [i for i, n in enumerate(rows[0]) if "second" not in n and "time" not in n and "speed" not in n and "ratio" not in n]
 for r in rows: print(",".join(r[i] for i in keep))
 PY
-) <(python3 - "$b" <<'PY'
+) | sed -E "s#$work/(old|new)#WORK#g") <(python3 - "$b" <<'PY'
 import csv, sys
 rows = list(csv.reader(open(sys.argv[1])))
 keep = [i for i, n in enumerate(rows[0]) if "second" not in n and "time" not in n and "speed" not in n and "ratio" not in n]
 for r in rows: print(",".join(r[i] for i in keep))
 PY
-) > /dev/null; then echo "differs: $rel"; differ=1; fi ;;
+) | sed -E "s#$work/(old|new)#WORK#g") > /dev/null; then echo "differs: $rel"; differ=1; fi ;;
     *)
       if ! diff <(normalised "$a") <(normalised "$b") > /dev/null; then echo "differs: $rel"; differ=1; fi ;;
   esac
