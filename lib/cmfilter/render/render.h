@@ -125,12 +125,13 @@ struct RenderedImage {
     double seconds = 0;        // wall time of the pixel loop
 };
 
-// BadInput for a sample count outside 1 .. kMaxSamples, a material count
-// that does not match the scene, a material without a driver, or, for the
-// exact method, a noise driver or a texture without its histogram pyramid;
+// Each surface is coloured by its material's driver kind
+// (surface_renderer.h). BadInput for a sample count outside 1 .. kMaxSamples,
+// a material count that does not match the scene, or, for the exact method,
+// a noise driver or a texture without its histogram pyramid;
 // Io for supersample or reference on a texture without its level 0 (a
 // moments driver whose recorded driver is gone, naming it).
-Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMaterial>& materials,
+Expected<RenderedImage> render(const Scene& scene, const std::vector<Material>& materials,
                                const RenderOptions& options);
 
 }  // namespace cmfilter

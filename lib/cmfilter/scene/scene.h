@@ -7,6 +7,7 @@
 #pragma once
 
 #include "cmfilter/color/color.h"
+#include "cmfilter/microsurface/color_combination.h"
 #include "cmfilter/microsurface/gaussian_microsurface.h"
 #include "cmfilter/math/vec3.h"
 #include "cmfilter/math/wrap_mode.h"
@@ -112,13 +113,8 @@ struct BaseLayerSource {
     DriverSource driver;
 };
 
-// How a microsurface material's colours combine (sec. 6): a weighted sum
-// k0 C0 + k1 C_h + k2 C_s, or the product C0 C_h C_s, of the layers present.
-enum class CombineMode { Sum, Product };
-struct ColorCombination {
-    CombineMode mode = CombineMode::Sum;
-    double base = 1, height = 1, slope = 1;  // k0, k1, k2 (Sum)
-};
+// How a microsurface material's colours combine (sec. 6): ColorCombination
+// (color_combination.h).
 
 // A textured displacement (displacement_texture.h): a square one-channel
 // image, one repeat a texture unit, heights texel * height_scale in texture
@@ -129,7 +125,7 @@ struct DisplacementSource {
     double height_scale = 1;
 };
 
-struct Material {
+struct MaterialSource {
     // C0 over the driver, or with a microsurface C_h over its heights; absent
     // (no table_path, no image_path) on a microsurface without a height map.
     ColorMapSource colormap;
@@ -154,7 +150,7 @@ struct Surface {
     Vec3 center;              // sphere
     double radius = 1;        // sphere: > 0
     TextureMapping mapping;
-    Material material;
+    MaterialSource material;
 };
 
 struct Scene {
