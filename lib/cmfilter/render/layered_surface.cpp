@@ -1,6 +1,7 @@
 #include "cmfilter/render/layered_surface.h"
 
 #include "cmfilter/render/displaced_plane_sample.h"
+#include "cmfilter/render/make_driver_renderer.h"
 #include "cmfilter/texture/anisotropic_probes.h"
 
 #include <algorithm>

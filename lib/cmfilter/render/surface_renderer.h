@@ -1,6 +1,7 @@
 // How `render` (render.h) colours one surface: one renderer per kind of
 // material driver (material.h), made once per surface by
-// make_surface_renderer, the one place that tells the kinds apart:
+// make_surface_renderer (make_surface_renderer.h), the one place that tells
+// the kinds apart:
 //   noise         noise_surface.h
 //   texture       texture_surface.h
 //   microsurface  microsurface_surface.h (Gaussian microsurface)
@@ -15,7 +16,7 @@
 #include "cmfilter/math/vec3.h"
 #include "cmfilter/microsurface/height_moment_table.h"
 #include "cmfilter/microsurface/microsurface_albedo.h"
-#include "cmfilter/render/render.h"
+#include "cmfilter/render/render_options.h"
 #include "cmfilter/scene/camera.h"
 #include "cmfilter/scene/material.h"
 #include "cmfilter/scene/scene.h"
@@ -110,20 +111,5 @@ public:
     void sample(const CameraRay& ray, const SurfaceHit& hit, const RenderContext& context,
                 PixelSamples& pixel) const override;
 };
-
-// The renderer of surface `surface`'s material for options.method. The
-// errors render() documents for a material: exact on a noise driver or a
-// texture without its histogram pyramid (BadInput), supersample or reference
-// on a texture without its level 0 (Io, naming it).
-Expected<std::unique_ptr<SurfaceRenderer>> make_surface_renderer(const Material& material, std::size_t surface,
-                                                                 const RenderOptions& options);
-
-// A noise's or a texture's renderer coloured by `colour_method` (a
-// microsurface's base layer: naive or gaussian), refused as
-// make_surface_renderer refuses it for options.method; BadInput for a
-// microsurface material.
-Expected<std::unique_ptr<DriverRenderer>> make_driver_renderer(const Material& material, std::size_t surface,
-                                                               RenderMethod colour_method,
-                                                               const RenderOptions& options);
 
 }  // namespace cmfilter
