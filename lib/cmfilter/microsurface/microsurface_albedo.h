@@ -1,5 +1,6 @@
 // The colour of a microsurface material (scene.h) over one footprint, its
-// layers (microsurface_colors.h) filtered and combined (Heitz et al. 2013, secs. 5 and 6):
+// layers (microsurface_colors.h) filtered and combined (Heitz et al. 2013,
+// secs. 5 and 6):
 //   height  C_h, V <C_h, D_h> (eq. 14; height_filtered_albedo.h);
 //   slope   C_s, V <C_s, D_s> (eqs. 19-20; slope_color.h): D_s for the
 //           unresolved slope covariance about the resolved mean slope, seen

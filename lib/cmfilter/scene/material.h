@@ -102,6 +102,13 @@ inline const MicrosurfaceColors* microsurface_colors(const Material& m)
     return nullptr;
 }
 
+inline MicrosurfaceColors* microsurface_colors(Material& m)
+{
+    if (auto* d = std::get_if<MicrosurfaceDriver>(&m.driver)) return &d->colors;
+    if (auto* d = std::get_if<DisplacementDriver>(&m.driver)) return &d->colors;
+    return nullptr;
+}
+
 // The layer a surface's table belongs to (tolerance_tables.h): C0 over a
 // driver, or C_h over a microsurface's heights; a microsurface without a
 // height map has none and gives the material's own, empty, layer.
@@ -113,7 +120,8 @@ inline const ColorLayer& table_layer(const Material& m)
 
 inline ColorLayer& table_layer(Material& m)
 {
-    return const_cast<ColorLayer&>(table_layer(static_cast<const Material&>(m)));
+    MicrosurfaceColors* colors = microsurface_colors(m);
+    return colors && colors->height ? *colors->height : m.color;
 }
 
 }  // namespace cmfilter

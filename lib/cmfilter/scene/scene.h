@@ -113,9 +113,6 @@ struct BaseLayerSource {
     DriverSource driver;
 };
 
-// How a microsurface material's colours combine (sec. 6): ColorCombination
-// (color_combination.h).
-
 // A textured displacement (displacement_texture.h): a square one-channel
 // image, one repeat a texture unit, heights texel * height_scale in texture
 // units, in place of a Gaussian microsurface (the paper's snake, fig. 10).
@@ -136,7 +133,7 @@ struct MaterialSource {
     std::optional<DisplacementSource> displacement;
     std::optional<SlopeColorMapSource> slope_colormap;  // microsurface only
     std::optional<BaseLayerSource> base;                // microsurface only
-    ColorCombination combine;                          // microsurface only
+    ColorCombination combine;                          // microsurface only (color_combination.h)
 
     bool has_colormap() const { return !colormap.table_path.empty() || !colormap.image_path.empty(); }
     bool has_microsurface() const { return microsurface || displacement; }
