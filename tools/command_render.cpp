@@ -53,7 +53,7 @@ Status write_aov(const std::string& path, const RenderedImage& image, const std:
 }
 
 // "surface 0: 128 x 8 sqrt table, 12288 bytes (1.56% of 256 x 256); ..."
-std::string describe_table(std::size_t surface, const SurfaceMaterial& m)
+std::string describe_table(std::size_t surface, const ColorLayer& m)
 {
     const TableAxes& ax = m.table.axes();
     const GaussianColorTableOptions defaults;
@@ -74,7 +74,7 @@ std::string describe_table(std::size_t surface, const SurfaceMaterial& m)
     return s.str();
 }
 
-nlohmann::json table_json(const SurfaceMaterial& m)
+nlohmann::json table_json(const ColorLayer& m)
 {
     const TableAxes& ax = m.table.axes();
     nlohmann::json j = {{"values", ax.values},
@@ -203,7 +203,7 @@ Status run(const RenderArgs& args)
         j["pixels_hit"] = hits;
         j["seconds"] = image->seconds;
         j["tables"] = nlohmann::json::array();
-        for (const SurfaceMaterial& m : *materials) j["tables"].push_back(table_json(m));
+        for (const Material& m : *materials) j["tables"].push_back(table_json(table_layer(m)));
         if (image->method == RenderMethod::Gaussian)
             j["footprints"] = {{"filtered", image->footprints}, {"plain", image->plain_footprints}};
         if (!args.aov.empty()) {
@@ -217,7 +217,7 @@ Status run(const RenderArgs& args)
                   << " pixels on a surface, " << image->seconds << " s\n";
         if (image->method == RenderMethod::Gaussian) {
             for (std::size_t i = 0; i < materials->size(); ++i)
-                std::cout << "  " << describe_table(i, (*materials)[i]) << "\n";
+                std::cout << "  " << describe_table(i, table_layer((*materials)[i])) << "\n";
             std::cout << "  " << image->plain_footprints << " of " << image->footprints
                       << " footprints took C0(mean) directly\n";
         }

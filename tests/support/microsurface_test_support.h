@@ -1,6 +1,6 @@
 // Helpers for the microsurface tests: angles, a test microsurface, a small
 // clamp colour map whose channels
-// all lie strictly inside (0, 1), a SurfaceMaterial built from it by hand
+// all lie strictly inside (0, 1), a colour layer built from it by hand
 // with a Gaussian table whose value nodes fall on the map's texel centres (so
 // the table's sigma = 0 row is C0 itself, up to float32 storage), an
 // independent piecewise-linear C0, the per-channel colour range, and
@@ -11,7 +11,8 @@
 #include "cmfilter/tables/gaussian_color_table.h"
 #include "cmfilter/microsurface/gaussian_microsurface.h"
 #include "cmfilter/microsurface/microsurface_footprint.h"
-#include "cmfilter/scene/scene_materials.h"
+#include "cmfilter/microsurface/microsurface_colors.h"
+#include "cmfilter/tables/color_layer.h"
 
 #include <doctest/doctest.h>
 
@@ -112,9 +113,9 @@ inline bool is_finite(const cmfilter::Rgb& c) { return std::isfinite(c.r) && std
 // over [vmin - 0.03, vmax + 0.03] (margin 0.03: node 3.5 k is the first texel
 // centre) and `sigmas` sigma nodes (sqrt spacing) up to sigma_max; no
 // small-sigma shortcut.
-inline cmfilter::SurfaceMaterial microsurface_test_material(int nodes_per_texel, int sigmas, double sigma_max)
+inline cmfilter::ColorLayer microsurface_test_layer(int nodes_per_texel, int sigmas, double sigma_max)
 {
-    cmfilter::SurfaceMaterial m;
+    cmfilter::ColorLayer m;
     m.map = microsurface_test_map();
     cmfilter::GaussianColorTableOptions o;
     o.values = 12 * nodes_per_texel + 1;  // (0.06 + 0.06) / (0.01 / k) intervals

@@ -69,7 +69,7 @@ inline cmfilter::SceneCamera make_scene_camera(const cmfilter::Vec3& position, c
 // The bundled scenes' material: the terrain map over [-0.68, 0.68] driven by
 // a 6-octave gradient fBm, with a 16 x 16 table and a placeholder sigma table
 // (0.1 at every LOD: for tests that do not judge gaussian's colours).
-inline cmfilter::SurfaceMaterial terrain_fbm_material()
+inline cmfilter::Material terrain_fbm_material()
 {
     auto config = cmfilter::ColorConfig::load("");
     REQUIRE(config);
@@ -85,16 +85,15 @@ inline cmfilter::SurfaceMaterial terrain_fbm_material()
     REQUIRE(noise);
     auto sigmas = cmfilter::NoiseSigmaTable::create(-9, 0.25, std::vector<double>(45, 0.1));
     REQUIRE(sigmas);
-    cmfilter::SurfaceMaterial m;
-    m.map = map->map;
+    cmfilter::ColorLayer color;
+    color.map = map->map;
     cmfilter::GaussianColorTableOptions table_options;
     table_options.values = 16;
     table_options.sigmas = 16;
-    auto table = cmfilter::GaussianColorTable::bake(m.map, table_options);
+    auto table = cmfilter::GaussianColorTable::bake(color.map, table_options);
     REQUIRE(table);
-    m.table = std::move(*table);
-    m.noise.emplace(std::move(*noise), std::move(*sigmas));
-    return m;
+    color.table = std::move(*table);
+    return {{}, std::move(color), cmfilter::NoiseDriver{cmfilter::FilteredNoise(std::move(*noise), std::move(*sigmas))}};
 }
 
 // CIEDE2000 between two renders of the same scene, over the pixels the first

@@ -38,7 +38,7 @@ inline ColorRange slope_range(const cmfilter::SlopeMap& map)
 
 // prepare_materials with the built-in colour configuration; the test stops
 // with the error's message if it fails.
-inline std::vector<cmfilter::SurfaceMaterial> prepared_materials(const cmfilter::Scene& scene, int threads)
+inline std::vector<cmfilter::Material> prepared_materials(const cmfilter::Scene& scene, int threads)
 {
     auto config = cmfilter::ColorConfig::load("");
     REQUIRE(config);

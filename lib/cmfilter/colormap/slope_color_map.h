@@ -18,7 +18,8 @@
 // the nearest edge texels hold, so every slope steeper than s_max along an
 // axis takes the edge colour. A hue wheel over the slope's direction.
 //
-// Both are plain data: scene-linear texels and an evaluate(s_x, s_y).
+// Both are plain data: scene-linear texels and an evaluate(s_x, s_y);
+// SlopeMap is either (a microsurface material's C_s).
 #pragma once
 
 #include "cmfilter/color/color.h"
@@ -26,6 +27,7 @@
 #include "cmfilter/util/error.h"
 
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace cmfilter {
@@ -43,6 +45,9 @@ struct SlopeVectorColorMap {
 
     Rgb evaluate(double sx, double sy) const;
 };
+
+// A slope colour map C_s (sec. 5.2) of either kind.
+using SlopeMap = std::variant<SteepnessColorMap, SlopeVectorColorMap>;
 
 // The invariants evaluate relies on (ColorMap's validate for the steepness
 // map; at least one texel, width x height of them, all finite, and a finite

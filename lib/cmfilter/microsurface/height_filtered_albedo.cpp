@@ -32,13 +32,13 @@ MicrosurfaceVisibility microsurface_visibility(const MicrosurfaceFootprint& foot
     return v;
 }
 
-HeightAlbedo height_filtered_albedo(const SurfaceMaterial& material, const MicrosurfaceFootprint& footprint,
+HeightAlbedo height_filtered_albedo(const ColorLayer& heights, const MicrosurfaceFootprint& footprint,
                                     const HeightDirections& d, HeightRepresentation representation,
                                     const HeightMomentTable& table, AlbedoCounts& counts, MaskingShadowing masking)
 {
     HeightAlbedo out;
     if (representation == HeightRepresentation::Naive) {
-        out.albedo = material.map.evaluate(footprint.mean_height);
+        out.albedo = heights.map.evaluate(footprint.mean_height);
         out.colour = out.albedo;
         out.mean = footprint.mean_height;
         return out;
@@ -53,7 +53,7 @@ HeightAlbedo height_filtered_albedo(const SurfaceMaterial& material, const Micro
         const HeightMoments moments = exact_height_moments(out.lambda_sum, footprint.sigma_h);
         out.mean = footprint.mean_height + moments.mean;
         out.sigma = moments.sigma;
-        out.colour = exact_height_color(material.map, footprint.sigma_h, out.lambda_sum, footprint.mean_height);
+        out.colour = exact_height_color(heights.map, footprint.sigma_h, out.lambda_sum, footprint.mean_height);
         out.albedo = v * out.colour;
         return out;
     }
@@ -62,7 +62,7 @@ HeightAlbedo height_filtered_albedo(const SurfaceMaterial& material, const Micro
                                       : table.lookup(out.lambda_sum, footprint.sigma_h);
     out.mean = footprint.mean_height + moments.mean;
     out.sigma = moments.sigma;
-    out.colour = gaussian_albedo(material, out.mean, out.sigma, counts);  // eq. 10
+    out.colour = gaussian_albedo(heights, out.mean, out.sigma, counts);  // eq. 10
     out.albedo = v * out.colour;                                          // eq. 14
     return out;
 }

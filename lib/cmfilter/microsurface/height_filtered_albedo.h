@@ -28,10 +28,10 @@
 #pragma once
 
 #include "cmfilter/color/color.h"
+#include "cmfilter/tables/color_layer.h"
 #include "cmfilter/tables/gaussian_albedo.h"
 #include "cmfilter/microsurface/height_moment_table.h"
 #include "cmfilter/microsurface/microsurface_footprint.h"
-#include "cmfilter/scene/scene_materials.h"
 #include "cmfilter/microsurface/smith_lambda.h"
 
 namespace cmfilter {
@@ -73,11 +73,12 @@ struct HeightAlbedo {
 // for an infinite lambda 0 below the highest point.
 double resolved_visibility(double height, double sigma_r, double lambda);
 
-// `table` serves ExactMoments; `counts` counts the table lookups as
+// `heights` is C_h and its table; `table` serves ExactMoments; `counts`
+// counts the table lookups as
 // gaussian_albedo does. `masking` chooses how the Lambdas combine
 // (smith_lambda.h): the paper's sum (eq. 13), or correlated by the
 // directions' azimuths.
-HeightAlbedo height_filtered_albedo(const SurfaceMaterial& material, const MicrosurfaceFootprint& footprint,
+HeightAlbedo height_filtered_albedo(const ColorLayer& heights, const MicrosurfaceFootprint& footprint,
                                     const HeightDirections& directions, HeightRepresentation representation,
                                     const HeightMomentTable& table, AlbedoCounts& counts,
                                     MaskingShadowing masking = MaskingShadowing::Uncorrelated);

@@ -44,17 +44,17 @@ Rgb slope_layer(const SlopeMap& map, const SlopeGaussian& slopes, const Resolved
 
 // The slope layer and V of a textured displacement from its own slopes and
 // heights over the piece (displacement_slope_color.h).
-DisplacementSlopeLayer sampled_displacement_layer(const SurfaceMaterial& m, const HeightDirections& d,
-                                                  const MicrosurfaceLayerOptions& options,
+DisplacementSlopeLayer sampled_displacement_layer(const MicrosurfaceColors& m, const DisplacementTexture& texture,
+                                                  const HeightDirections& d, const MicrosurfaceLayerOptions& options,
                                                   const FootprintPiece& piece)
 {
     DisplacementSlopeColorOptions o;
     o.masking = options.masking;
     o.shading = options.slope_shading;
-    if (!m.slope_map)
-        return displacement_slope_layer(*m.displacement, static_cast<const SteepnessColorMap*>(nullptr), piece, d, o);
-    return std::visit([&](const auto& map) { return displacement_slope_layer(*m.displacement, &map, piece, d, o); },
-                      *m.slope_map);
+    if (!m.slope)
+        return displacement_slope_layer(texture, static_cast<const SteepnessColorMap*>(nullptr), piece, d, o);
+    return std::visit([&](const auto& map) { return displacement_slope_layer(texture, &map, piece, d, o); },
+                      *m.slope);
 }
 
 // The Gaussian methods on a textured displacement: D_s fitted to the
@@ -85,16 +85,18 @@ Rgb times(const Rgb& a, const Rgb& b) { return {a.r * b.r, a.g * b.g, a.b * b.b}
 
 }  // namespace
 
-MicrosurfaceLayers microsurface_layers(const SurfaceMaterial& m, const MicrosurfaceFootprint& f,
+MicrosurfaceLayers microsurface_layers(const MicrosurfaceColors& m, const MicrosurfaceFootprint& f,
                                        const ResolvedSlope& slope, const HeightDirections& d,
                                        const MicrosurfaceLayerOptions& options, const HeightMomentTable& table,
-                                       AlbedoCounts& counts, const FootprintPiece* piece)
+                                       AlbedoCounts& counts, const DisplacementTexture* displacement,
+                                       const FootprintPiece* piece)
 {
     MicrosurfaceLayers out;
     out.mean = f.mean_height;
     std::optional<Rgb> height, slope_color;
-    if (m.height_map) {
-        const HeightAlbedo h = height_filtered_albedo(m, f, d, options.heights, table, counts, options.masking);
+    if (m.height) {
+        const HeightAlbedo h =
+            height_filtered_albedo(*m.height, f, d, options.heights, table, counts, options.masking);
         height = h.colour;
         out.visibility = options.heights == HeightRepresentation::Naive ? 1.0 : h.visibility * h.resolved_visibility;
         out.mean = h.mean;
@@ -102,17 +104,17 @@ MicrosurfaceLayers microsurface_layers(const SurfaceMaterial& m, const Microsurf
     } else if (options.heights != HeightRepresentation::Naive) {
         out.visibility = microsurface_visibility(f, d, options.masking).total();
     }
-    if (options.slopes == SlopeRepresentation::Exact && m.displacement && piece) {
-        const DisplacementSlopeLayer sampled = sampled_displacement_layer(m, d, options, *piece);
+    if (options.slopes == SlopeRepresentation::Exact && displacement && piece) {
+        const DisplacementSlopeLayer sampled = sampled_displacement_layer(m, *displacement, d, options, *piece);
         out.visibility = sampled.visibility;
-        if (m.slope_map) slope_color = sampled.colour;
-    } else if (options.slopes == SlopeRepresentation::Gaussian && m.displacement && piece) {
-        const MaskedGaussian masked = masked_gaussian(*m.displacement, d, options, *piece);
+        if (m.slope) slope_color = sampled.colour;
+    } else if (options.slopes == SlopeRepresentation::Gaussian && displacement && piece) {
+        const MaskedGaussian masked = masked_gaussian(*displacement, d, options, *piece);
         out.visibility = masked.visibility;
-        if (m.slope_map) slope_color = slope_layer(*m.slope_map, masked.slopes, slope, d, options);
-    } else if (m.slope_map) {
+        if (m.slope) slope_color = slope_layer(*m.slope, masked.slopes, slope, d, options);
+    } else if (m.slope) {
         const SlopeGaussian slopes{slope.x, slope.y, f.slope_xx, f.slope_xy, f.slope_yy};
-        slope_color = slope_layer(*m.slope_map, slopes, slope, d, options);
+        slope_color = slope_layer(*m.slope, slopes, slope, d, options);
     }
     const ColorCombination& c = m.combine;
     Rgb layers;

@@ -1,5 +1,6 @@
 // The colour of a microsurface material (scene.h) over one footprint, its
-// layers filtered and combined (Heitz et al. 2013, secs. 5 and 6):
+// layers (microsurface_colors.h) filtered and combined (Heitz et al. 2013,
+// secs. 5 and 6):
 //   height  C_h, V <C_h, D_h> (eq. 14; height_filtered_albedo.h);
 //   slope   C_s, V <C_s, D_s> (eqs. 19-20; slope_color.h): D_s for the
 //           unresolved slope covariance about the resolved mean slope, seen
@@ -32,11 +33,13 @@
 #pragma once
 
 #include "cmfilter/color/color.h"
+#include "cmfilter/microsurface/color_combination.h"
 #include "cmfilter/microsurface/displacement_slope_color.h"
+#include "cmfilter/microsurface/displacement_texture.h"
 #include "cmfilter/microsurface/height_filtered_albedo.h"
 #include "cmfilter/microsurface/light_weighted_slope_map.h"
+#include "cmfilter/microsurface/microsurface_colors.h"
 #include "cmfilter/microsurface/microsurface_footprint.h"
-#include "cmfilter/scene/scene_materials.h"
 
 #include <optional>
 
@@ -70,15 +73,17 @@ struct MicrosurfaceLayers {
 
 // `slope` is the resolved mean slope over the probe (needed with a slope
 // map; ignored otherwise). `table` serves HeightRepresentation::ExactMoments.
-// On a textured displacement with a `piece`, SlopeRepresentation::Exact takes
-// D_s and V from the texture's own slopes and heights sampled over it
-// (displacement_slope_color.h), and Gaussian from its masked moment tables
+// On a textured `displacement` (null: a Gaussian microsurface) with a
+// `piece`, SlopeRepresentation::Exact takes D_s and V from the texture's own
+// slopes and heights sampled over it (displacement_slope_color.h), and
+// Gaussian from its masked moment tables
 // (DisplacementTexture::masked_footprint); without a piece, the Gaussian of
 // the footprint's moments as elsewhere.
-MicrosurfaceLayers microsurface_layers(const SurfaceMaterial& material, const MicrosurfaceFootprint& footprint,
+MicrosurfaceLayers microsurface_layers(const MicrosurfaceColors& colors, const MicrosurfaceFootprint& footprint,
                                        const ResolvedSlope& slope, const HeightDirections& directions,
                                        const MicrosurfaceLayerOptions& options, const HeightMomentTable& table,
-                                       AlbedoCounts& counts, const FootprintPiece* piece = nullptr);
+                                       AlbedoCounts& counts, const DisplacementTexture* displacement = nullptr,
+                                       const FootprintPiece* piece = nullptr);
 
 // The footprint's albedo from the probes' mean V and mean shadowed layers
 // and the base layer's filtered colour (none without a base layer).

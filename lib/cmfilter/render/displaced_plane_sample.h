@@ -1,5 +1,5 @@
 // One ray of the ray-traced ground truth for a microsurface plane (scene.h,
-// Material::microsurface): the plane displaced along its normal (the side
+// MaterialSource::microsurface): the plane displaced along its normal (the side
 // facing the camera) by the microsurface's heights, a tabulated heightfield
 // (heightfield_tracer.h) traced exactly, and a shadow ray from the hit to the
 // light. The frame: x = <p - mapping origin, u_axis>, y = <p - mapping

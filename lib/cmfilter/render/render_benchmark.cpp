@@ -149,7 +149,7 @@ void average_in(RenderedImage& sum, const RenderedImage& round, int rounds)
 // renders the two with seeds s and s + 1, round k >= 1 with s + 2k + 1 and
 // s + 2k + 2: never s + 2, the configurations' seed.
 Expected<std::pair<RenderedImage, RenderedImage>> repeatable_references(
-    const Scene& scene, const std::vector<SurfaceMaterial>& materials, const BenchOptions& options)
+    const Scene& scene, const std::vector<Material>& materials, const BenchOptions& options)
 {
     RenderOptions ro;
     ro.method = RenderMethod::Reference;
@@ -183,7 +183,7 @@ Expected<std::pair<RenderedImage, RenderedImage>> repeatable_references(
 
 }  // namespace
 
-Expected<SceneBench> bench_scene(const Scene& scene, std::vector<SurfaceMaterial>& materials,
+Expected<SceneBench> bench_scene(const Scene& scene, std::vector<Material>& materials,
                                  const BenchOptions& options)
 {
     if (options.repeats < 1) return bad_input("bench: repeats must be >= 1, got " + std::to_string(options.repeats));
@@ -230,7 +230,7 @@ Expected<SceneBench> bench_scene(const Scene& scene, std::vector<SurfaceMaterial
             if (auto st = prepare_histograms(scene, materials, mo); !st) return st.error();
         }
         if (c.method == RenderMethod::GaussianExact &&
-            std::none_of(materials.begin(), materials.end(), [](const SurfaceMaterial& m) { return m.layered(); })) {
+            std::none_of(materials.begin(), materials.end(), is_microsurface)) {
             if (options.note) options.note(scene.path + ": gaussian-exact: left out (no microsurface: it would be gaussian)");
             continue;
         }
@@ -244,10 +244,11 @@ Expected<SceneBench> bench_scene(const Scene& scene, std::vector<SurfaceMaterial
                 to.sigmas = c.table_sigmas;
                 to.spacing = c.spacing;
                 to.threads = options.threads;
-                for (SurfaceMaterial& m : materials) {
-                    auto table = GaussianColorTable::bake(m.map, to);
+                for (Material& m : materials) {
+                    ColorLayer& layer = table_layer(m);
+                    auto table = GaussianColorTable::bake(layer.map, to);
                     if (!table) return table.error();
-                    m.table = std::move(*table);
+                    layer.table = std::move(*table);
                 }
             }
             TableChoiceOptions choice;
@@ -259,7 +260,7 @@ Expected<SceneBench> bench_scene(const Scene& scene, std::vector<SurfaceMaterial
         }
         if (c.method == RenderMethod::Gaussian)
             for (std::size_t i = 0; i < materials.size(); ++i) {
-                const SurfaceMaterial& m = materials[i];
+                const ColorLayer& m = table_layer(materials[i]);
                 const TableAxes& ax = m.table.axes();
                 row.table_bytes += m.table.data().size() * sizeof(float);
                 row.table_error = std::max(row.table_error, m.fit.error);

@@ -113,7 +113,7 @@ struct BenchOptions {
 // pyramids it needs are baked into the materials then, unless they hold them
 // already (a microsurface needs none). gaussian-exact runs only on a scene
 // with a microsurface (elsewhere it is gaussian).
-Expected<SceneBench> bench_scene(const Scene& scene, std::vector<SurfaceMaterial>& materials,
+Expected<SceneBench> bench_scene(const Scene& scene, std::vector<Material>& materials,
                                  const BenchOptions& options);
 
 // CSV: header and one row per configuration (and the reference's

@@ -30,11 +30,11 @@ Rgb histogram_color(const HistogramTexture& histograms, double u, double v, doub
 
 }  // namespace
 
-TextureFootprint filter_texture_footprint(const SurfaceMaterial& m, const SurfaceHit& h, TextureColor colour,
-                                          FootprintWidth width, int max_probes, const std::vector<Rgb>& bin_colors,
-                                          std::vector<float>& weights)
+TextureFootprint filter_texture_footprint(const ColorLayer& color, const FilteredTexture& texture,
+                                          const HistogramTexture* histograms, const SurfaceHit& h,
+                                          TextureColor colour, FootprintWidth width, int max_probes,
+                                          const std::vector<Rgb>& bin_colors, std::vector<float>& weights)
 {
-    const FilteredTexture& texture = *m.texture;
     TextureFootprint out;
     const FootprintProbes probes = footprint_probes(h.du_dx, h.dv_dx, h.du_dy, h.dv_dy, max_probes, width);
     out.probes = probes.count;
@@ -48,10 +48,10 @@ TextureFootprint filter_texture_footprint(const SurfaceMaterial& m, const Surfac
         out.sigma += f.sigma;
         switch (colour) {
         case TextureColor::None: break;
-        case TextureColor::Naive: out.albedo += m.map.evaluate(f.mean); break;
-        case TextureColor::Gaussian: out.albedo += gaussian_albedo(m, f.mean, f.sigma, out.counts); break;
+        case TextureColor::Naive: out.albedo += color.map.evaluate(f.mean); break;
+        case TextureColor::Gaussian: out.albedo += gaussian_albedo(color, f.mean, f.sigma, out.counts); break;
         case TextureColor::Exact:
-            out.albedo += histogram_color(*m.histograms, u, v, lookup_lod, bin_colors, weights);
+            out.albedo += histogram_color(*histograms, u, v, lookup_lod, bin_colors, weights);
             break;
         }
     }

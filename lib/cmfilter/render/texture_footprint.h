@@ -13,7 +13,7 @@
 //             (trilinear_lod_for_box, texture_lod.h);
 //   exact     sum_b h_b C0(v_b) (sec. 4.1), h_b the probe's histogram, a
 //             trilinear lookup of the histogram pyramid at the same LOD
-//             (needs SurfaceMaterial::histograms).
+//             (needs the texture's histogram pyramid).
 // The pixel's albedo is the mean of its probes' colours: a thin footprint
 // near the horizon keeps what varies across it. For a footprint made of
 // squares aligned with a pyramid level (a probe width of 2^k level-0 texels
@@ -23,9 +23,11 @@
 
 #include "cmfilter/color/color.h"
 #include "cmfilter/texture/footprint_width.h"
-#include "cmfilter/tables/gaussian_albedo.h"
-#include "cmfilter/scene/scene_materials.h"
 #include "cmfilter/scene/surface_hit.h"
+#include "cmfilter/tables/color_layer.h"
+#include "cmfilter/tables/gaussian_albedo.h"
+#include "cmfilter/texture/filtered_texture.h"
+#include "cmfilter/texture/histogram_pyramid.h"
 
 #include <vector>
 
@@ -42,10 +44,12 @@ struct TextureFootprint {
     AlbedoCounts counts; // gaussian: probes coloured, and those that took C0(mean) (gaussian_albedo.h)
 };
 
-// `bin_colors`: C0(v_b) for the material's histogram values (Exact only);
-// `weights`: scratch space for the histogram weights.
-TextureFootprint filter_texture_footprint(const SurfaceMaterial& m, const SurfaceHit& h, TextureColor colour,
-                                          FootprintWidth width, int max_probes, const std::vector<Rgb>& bin_colors,
-                                          std::vector<float>& weights);
+// `color`: C0 and its table over the texture's values; `histograms`: the
+// texture's histogram pyramid (Exact only); `bin_colors`: C0(v_b) for its
+// values (Exact only); `weights`: scratch space for the histogram weights.
+TextureFootprint filter_texture_footprint(const ColorLayer& color, const FilteredTexture& texture,
+                                          const HistogramTexture* histograms, const SurfaceHit& h,
+                                          TextureColor colour, FootprintWidth width, int max_probes,
+                                          const std::vector<Rgb>& bin_colors, std::vector<float>& weights);
 
 }  // namespace cmfilter

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "cmfilter/color/color.h"
+#include "cmfilter/microsurface/color_combination.h"
 #include "cmfilter/microsurface/gaussian_microsurface.h"
 #include "cmfilter/math/vec3.h"
 #include "cmfilter/math/wrap_mode.h"
@@ -112,14 +113,6 @@ struct BaseLayerSource {
     DriverSource driver;
 };
 
-// How a microsurface material's colours combine (sec. 6): a weighted sum
-// k0 C0 + k1 C_h + k2 C_s, or the product C0 C_h C_s, of the layers present.
-enum class CombineMode { Sum, Product };
-struct ColorCombination {
-    CombineMode mode = CombineMode::Sum;
-    double base = 1, height = 1, slope = 1;  // k0, k1, k2 (Sum)
-};
-
 // A textured displacement (displacement_texture.h): a square one-channel
 // image, one repeat a texture unit, heights texel * height_scale in texture
 // units, in place of a Gaussian microsurface (the paper's snake, fig. 10).
@@ -129,7 +122,7 @@ struct DisplacementSource {
     double height_scale = 1;
 };
 
-struct Material {
+struct MaterialSource {
     // C0 over the driver, or with a microsurface C_h over its heights; absent
     // (no table_path, no image_path) on a microsurface without a height map.
     ColorMapSource colormap;
@@ -140,7 +133,7 @@ struct Material {
     std::optional<DisplacementSource> displacement;
     std::optional<SlopeColorMapSource> slope_colormap;  // microsurface only
     std::optional<BaseLayerSource> base;                // microsurface only
-    ColorCombination combine;                          // microsurface only
+    ColorCombination combine;                          // microsurface only (color_combination.h)
 
     bool has_colormap() const { return !colormap.table_path.empty() || !colormap.image_path.empty(); }
     bool has_microsurface() const { return microsurface || displacement; }
@@ -154,7 +147,7 @@ struct Surface {
     Vec3 center;              // sphere
     double radius = 1;        // sphere: > 0
     TextureMapping mapping;
-    Material material;
+    MaterialSource material;
 };
 
 struct Scene {

@@ -405,12 +405,12 @@ Expected<DisplacementSource> read_displacement(const JsonValue& value, const fs:
     return d;
 }
 
-Expected<Material> read_material(const JsonValue& value, const fs::path& scene_folder)
+Expected<MaterialSource> read_material(const JsonValue& value, const fs::path& scene_folder)
 {
     auto object = JsonObject::read(
         value, {"colormap", "driver", "microsurface", "displacement", "slope_colormap", "base", "combine"});
     if (!object) return object.error();
-    Material material;
+    MaterialSource material;
     Status status = object->require_one_of({"driver", "microsurface", "displacement"});
     if (status && object->has("driver")) {
         status = object->reject_any_of({"slope_colormap", "base", "combine"},

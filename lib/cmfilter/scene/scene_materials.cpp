@@ -10,6 +10,7 @@
 #include "cmfilter/colormap/slope_color_map_loading.h"
 #include "cmfilter/tables/table_color_map.h"
 #include "cmfilter/scene/tolerance_tables.h"
+#include "cmfilter/texture/histogram_pyramid.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -39,7 +40,7 @@ struct LayerSource {
 
 LayerSource material_layer(const Scene& scene, std::size_t i)
 {
-    const Material& material = scene.surfaces[i].material;
+    const MaterialSource& material = scene.surfaces[i].material;
     return {scene, i, material.colormap, material.driver, ""};
 }
 
@@ -58,8 +59,9 @@ ColorMapLoadOptions gradient_load_options(const std::string& path, double vmin, 
     return load;
 }
 
+// The layer's colour map and, unless it is fitted later, its table.
 Status load_colormap(const LayerSource& layer, const ColorConfig& config, const MaterialOptions& options,
-                     SurfaceMaterial& m)
+                     ColorLayer& m, MaterialProvenance& provenance)
 {
     const ColorMapSource& source = layer.colormap;
     const std::string prefix = layer.where("colormap");
@@ -71,9 +73,9 @@ Status load_colormap(const LayerSource& layer, const ColorConfig& config, const 
         auto map = load_table_color_map(*loaded, map_options, config);
         if (!map) return located(map.error(), prefix);
         m.map = map->map.map;
-        m.map_path = map->map.provenance.path;
+        provenance.map_path = map->map.provenance.path;
         m.table = std::move(loaded->table);
-        m.table_path = source.table_path;
+        provenance.table_path = source.table_path;
         return ok();
     }
     auto map = load_color_map(gradient_load_options(source.image_path, source.domain_min, source.domain_max,
@@ -81,7 +83,7 @@ Status load_colormap(const LayerSource& layer, const ColorConfig& config, const 
                               config);
     if (!map) return located(map.error(), prefix);
     m.map = std::move(map->map);
-    m.map_path = source.image_path;
+    provenance.map_path = source.image_path;
     const std::optional<double>& tolerance = options.tables.tolerance;
     if (tolerance ? *tolerance > 0 : source.tolerance.has_value()) return ok();  // fitted later
     GaussianColorTableOptions table_options;
@@ -95,17 +97,18 @@ Status load_colormap(const LayerSource& layer, const ColorConfig& config, const 
 // A clamp map whose domain misses the driver's values [lo, hi] (`what` says
 // how they were measured) shows one end colour everywhere: surely the wrong
 // domain.
-Status check_domain(const LayerSource& layer, const SurfaceMaterial& m, double lo, double hi,
-                    const std::string& what)
+Status check_domain(const LayerSource& layer, const ColorMap& map, double lo, double hi, const std::string& what)
 {
-    if (m.map.wrap != WrapMode::Clamp || !(hi < m.map.vmin || lo > m.map.vmax)) return ok();
+    if (map.wrap != WrapMode::Clamp || !(hi < map.vmin || lo > map.vmax)) return ok();
     std::ostringstream s;
-    s << layer.where("colormap") << "the colour map's domain [" << m.map.vmin << ", " << m.map.vmax
+    s << layer.where("colormap") << "the colour map's domain [" << map.vmin << ", " << map.vmax
       << "] does not meet the driver's values (" << what << ": [" << lo << ", " << hi << "])";
     return bad_input(s.str());
 }
 
-Status load_noise_driver(const LayerSource& layer, const MaterialOptions& options, SurfaceMaterial& m)
+// A procedural noise and its sigma table: named, or baked here.
+Expected<NoiseDriver> load_noise_driver(const LayerSource& layer, const ColorMap& map, const MaterialOptions& options,
+                                        MaterialProvenance& provenance)
 {
     const DriverSource& driver = layer.driver;
     const std::size_t i = layer.i;
@@ -135,56 +138,55 @@ Status load_noise_driver(const LayerSource& layer, const MaterialOptions& option
         auto box = bake->table(FootprintShape::Box);
         if (!box) return located(box.error(), prefix);
         table = std::move(*box);
-        m.sigma_table_baked = true;
+        provenance.sigma_table_baked = true;
     }
 
-    if (m.map.wrap == WrapMode::Clamp) {
+    if (map.wrap == WrapMode::Clamp) {
         const NoiseGlobalStats stats = measure_global_stats(*noise, 1 << 16, 7, options.threads);
-        if (auto st = check_domain(layer, m, stats.mean - 3 * stats.sigma, stats.mean + 3 * stats.sigma,
+        if (auto st = check_domain(layer, map, stats.mean - 3 * stats.sigma, stats.mean + 3 * stats.sigma,
                                    "mean +- 3 sigma");
             !st)
-            return st;
+            return st.error();
     }
-    m.noise.emplace(std::move(*noise), std::move(*table));
-    return ok();
+    return NoiseDriver{FilteredNoise(std::move(*noise), std::move(*table))};
 }
 
 // A moment pyramid (bake-moments output) and the driver it was baked from,
 // read back from its cmfilter:source and checked as apply checks it.
-Status load_moments_driver(const LayerSource& layer, const MaterialOptions& options, SurfaceMaterial& m)
+Expected<TextureDriver> load_moments_driver(const LayerSource& layer, const ColorMap& map,
+                                            const MaterialOptions& options, MaterialProvenance& provenance)
 {
     const std::string& path = layer.driver.moments_path;
     const std::string prefix = layer.where("driver/moments");
     auto moments = MomentTexture::open(path);
     if (!moments) return located(moments.error(), prefix);
     const MomentPyramidInfo& info = moments->info();
-    if (auto st = check_domain(layer, m, info.driver_min, info.driver_max, "min and max"); !st) return st;
+    if (auto st = check_domain(layer, map, info.driver_min, info.driver_max, "min and max"); !st) return st.error();
     std::error_code ec;
     if (!std::filesystem::is_regular_file(info.source, ec)) {
         // The pyramid alone serves naive and gaussian; what needs level 0
         // refuses the material with this (render, load_histograms).
-        m.driver_path = info.source;
-        m.missing_driver = prefix + "cannot read driver '" + info.source + "' recorded in '" + path +
-                           "' (cmfilter:source): no such file";
+        provenance.driver_path = info.source;
+        provenance.missing_driver = prefix + "cannot read driver '" + info.source + "' recorded in '" + path +
+                                    "' (cmfilter:source): no such file";
         auto texture = FilteredTexture::create(std::move(*moments), std::nullopt);
         if (!texture) return located(texture.error(), prefix);
-        m.texture.emplace(std::move(*texture));
-        return ok();
+        return TextureDriver{std::move(*texture), std::nullopt};
     }
     auto source = read_moment_source(info.source, path, info, options.threads);
     if (!source) return located(source.error(), prefix);
     if (!is_moment_source(*source, info))
         return bad_input(prefix + moment_source_changed(info.source, *source, path, info) + "; re-bake the moments");
-    m.driver_path = info.source;  // before the moments (and info with them) move
+    provenance.driver_path = info.source;  // before the moments (and info with them) move
     auto texture = FilteredTexture::create(std::move(*moments), std::move(source->image.values));
     if (!texture) return located(texture.error(), prefix);
-    m.texture.emplace(std::move(*texture));
-    return ok();
+    return TextureDriver{std::move(*texture), std::nullopt};
 }
 
 // A driver image: read once, its moment pyramid baked in process into a
 // temporary file (TextureSystem reads files) that the texture keeps.
-Status load_image_driver(const LayerSource& layer, const MaterialOptions& options, SurfaceMaterial& m)
+Expected<TextureDriver> load_image_driver(const LayerSource& layer, const ColorMap& map,
+                                          const MaterialOptions& options, MaterialProvenance& provenance)
 {
     const std::string& path = layer.driver.image_path;
     const std::size_t i = layer.i;
@@ -195,7 +197,8 @@ Status load_image_driver(const LayerSource& layer, const MaterialOptions& option
     bake.threads = options.threads;
     auto driver = read_driver_and_hash(bake.driver_read());
     if (!driver) return located(driver.error(), prefix);
-    if (auto st = check_domain(layer, m, driver->image.min, driver->image.max, "min and max"); !st) return st;
+    if (auto st = check_domain(layer, map, driver->image.min, driver->image.max, "min and max"); !st)
+        return st.error();
     if (options.note)
         options.note("baking the moment pyramid of " + path + " (surface " + std::to_string(i) +
                      "; bake it once with bake-moments --wrap periodic and name it with driver/moments to skip "
@@ -210,31 +213,32 @@ Status load_image_driver(const LayerSource& layer, const MaterialOptions& option
     auto texture = FilteredTexture::create(std::move(*moments), std::move(driver->image.values),
                                            std::make_shared<const TemporaryFile>(std::move(*file)));
     if (!texture) return located(texture.error(), prefix);
-    m.texture.emplace(std::move(*texture));
-    m.driver_path = path;
-    m.moments_baked = true;
-    return ok();
+    provenance.driver_path = path;
+    provenance.moments_baked = true;
+    return TextureDriver{std::move(*texture), std::nullopt};
 }
 
 // The histogram pyramid of a texture driver (render --method exact): baked
 // from the level-0 driver the texture was made from, with its wrap and
 // channel, into a temporary file that the material keeps.
-Status load_histograms(const Scene& scene, std::size_t i, const MaterialOptions& options, SurfaceMaterial& m)
+Status load_histograms(const Scene& scene, std::size_t i, const MaterialOptions& options, TextureDriver& texture,
+                       MaterialProvenance& provenance)
 {
     const DriverSource& driver = scene.surfaces[i].material.driver;
     const std::string prefix =
         where(scene, i, driver.kind == DriverKind::Moments ? "driver/moments" : "driver/image");
-    if (!m.missing_driver.empty())
-        return io_error(m.missing_driver + "; exact bakes its histograms from the driver's texels: re-bake the "
+    if (!provenance.missing_driver.empty())
+        return io_error(provenance.missing_driver +
+                        "; exact bakes its histograms from the driver's texels: re-bake the "
                         "moments from the driver where it is now, or name the driver itself with driver/image");
-    const MomentPyramidInfo& moments = m.texture->moments().info();
+    const MomentPyramidInfo& moments = texture.texture.moments().info();
     HistogramBakeOptions bake;
-    bake.driver_path = m.driver_path;
+    bake.driver_path = provenance.driver_path;
     if (driver.kind == DriverKind::Moments) bake.channel = moments.channel;
     bake.wrap = moments.wrap;
     bake.threads = options.threads;
     if (options.note)
-        options.note("baking the histogram pyramid of " + m.driver_path + " (surface " + std::to_string(i) +
+        options.note("baking the histogram pyramid of " + provenance.driver_path + " (surface " + std::to_string(i) +
                      "; --method exact)");
     auto file = TemporaryFile::create("cmfilter-histograms", ".exr");
     if (!file) return located(file.error(), prefix);
@@ -243,42 +247,127 @@ Status load_histograms(const Scene& scene, std::size_t i, const MaterialOptions&
     if (!baked) return located(baked.error(), prefix);
     auto histograms = HistogramTexture::open(file->path());
     if (!histograms) return located(histograms.error(), prefix);
-    m.histograms_file = std::make_shared<const TemporaryFile>(std::move(*file));
-    m.histograms.emplace(std::move(*histograms));
+    provenance.histograms_file = std::make_shared<const TemporaryFile>(std::move(*file));
+    texture.histograms.emplace(std::move(*histograms));
     return ok();
 }
 
-Status load_driver(const LayerSource& layer, const MaterialOptions& options, SurfaceMaterial& m)
+// A noise or texture driver over the layer's colour map.
+Expected<MaterialDriver> load_driver(const LayerSource& layer, const ColorMap& map, const MaterialOptions& options,
+                                     MaterialProvenance& provenance)
 {
+    const auto as_driver = [](auto loaded) -> Expected<MaterialDriver> {
+        if (!loaded) return loaded.error();
+        return MaterialDriver{std::move(*loaded)};
+    };
     switch (layer.driver.kind) {
-    case DriverKind::Noise: return load_noise_driver(layer, options, m);
-    case DriverKind::Moments: return load_moments_driver(layer, options, m);
-    case DriverKind::Image: return load_image_driver(layer, options, m);
+    case DriverKind::Noise: return as_driver(load_noise_driver(layer, map, options, provenance));
+    case DriverKind::Moments: return as_driver(load_moments_driver(layer, map, options, provenance));
+    case DriverKind::Image: return as_driver(load_image_driver(layer, map, options, provenance));
     }
     return runtime_error(layer.where("driver") + "unknown driver kind");
 }
 
-// A microsurface (sec. 5), and a clamp height map's domain checked against
-// its heights' +- 3 sigma_h.
-Status load_microsurface(const Scene& scene, std::size_t i, SurfaceMaterial& m)
+// A plain material: C0 (loaded already) over a noise or texture driver.
+Expected<Material> load_driven_material(const LayerSource& layer, const MaterialOptions& options,
+                                        MaterialProvenance provenance, ColorLayer color)
+{
+    auto driver = load_driver(layer, color.map, options, provenance);
+    if (!driver) return driver.error();
+    return Material{std::move(provenance), std::move(color), std::move(*driver)};
+}
+
+// A slope colour map (sec. 5.2): a steepness gradient over degrees, or a
+// slope-vector image.
+Status load_slope_map(const Scene& scene, std::size_t i, const ColorConfig& config, std::optional<SlopeMap>& slope,
+                      MaterialProvenance& provenance)
+{
+    const SlopeColorMapSource& source = *scene.surfaces[i].material.slope_colormap;
+    const std::string prefix = where(scene, i, "slope_colormap");
+    if (source.kind == SlopeMapKind::Steepness) {
+        auto map = load_color_map(gradient_load_options(source.image_path, source.domain_min, source.domain_max,
+                                                        source.wrap, source.colorspace),
+                                  config);
+        if (!map) return located(map.error(), prefix);
+        slope = SteepnessColorMap{std::move(map->map)};
+    } else {
+        SlopeVectorColorMapLoadOptions load;
+        load.path = source.image_path;
+        load.colorspace = source.colorspace;
+        load.s_max = source.max_slope;
+        auto map = load_slope_vector_color_map(load, config);
+        if (!map) return located(map.error(), prefix);
+        slope = std::move(map->map);
+    }
+    provenance.slope_map_path = source.image_path;
+    return ok();
+}
+
+// A base layer: C0 and its driver, loaded as a plain material's (its table
+// the default one).
+Expected<std::shared_ptr<const Material>> load_base_layer(const Scene& scene, std::size_t i, const ColorConfig& config,
+                                                          const MaterialOptions& options)
+{
+    const BaseLayerSource& source = *scene.surfaces[i].material.base;
+    const LayerSource layer{scene, i, source.colormap, source.driver, "base/"};
+    MaterialOptions base_options = options;
+    base_options.tables.tolerance = 0;  // the default table
+    MaterialProvenance provenance;
+    ColorLayer color;
+    if (auto st = load_colormap(layer, config, base_options, color, provenance); !st) return st.error();
+    auto base = load_driven_material(layer, base_options, std::move(provenance), std::move(color));
+    if (!base) return base.error();
+    return std::make_shared<const Material>(std::move(*base));
+}
+
+// What colours a microsurface besides C_h: its slope map, its base layer and
+// their combination.
+Status load_microsurface_colors(const Scene& scene, std::size_t i, const ColorConfig& config,
+                                const MaterialOptions& options, MicrosurfaceColors& colors,
+                                std::shared_ptr<const Material>& base, MaterialProvenance& provenance)
+{
+    const MaterialSource& material = scene.surfaces[i].material;
+    if (material.slope_colormap)
+        if (auto st = load_slope_map(scene, i, config, colors.slope, provenance); !st) return st;
+    if (material.base) {
+        auto loaded = load_base_layer(scene, i, config, options);
+        if (!loaded) return loaded.error();
+        base = std::move(*loaded);
+    }
+    colors.combine = material.combine;
+    return ok();
+}
+
+// A Gaussian microsurface (sec. 5), a clamp height map's domain checked
+// against its heights' +- 3 sigma_h, and its colours.
+Expected<Material> load_microsurface_material(const Scene& scene, std::size_t i, const ColorConfig& config,
+                                              const MaterialOptions& options, MaterialProvenance provenance,
+                                              std::optional<ColorLayer> heights)
 {
     const Surface& surface = scene.surfaces[i];
     auto micro = GaussianMicrosurface::create(*surface.material.microsurface);
     if (!micro) return located(micro.error(), where(scene, i, "microsurface"));
     const double sigma = micro->sigma_h();
-    if (m.height_map)
-        if (auto st = check_domain(material_layer(scene, i), m, -3 * sigma, 3 * sigma,
+    if (heights)
+        if (auto st = check_domain(material_layer(scene, i), heights->map, -3 * sigma, 3 * sigma,
                                    "the microsurface's heights, +- 3 sigma_h");
             !st)
-            return st;
-    m.microsurface.emplace(std::move(*micro));
-    m.height_scale = 1.0 / length(surface.mapping.u_axis);
-    return ok();
+            return st.error();
+    MicrosurfaceColors colors;
+    colors.height = std::move(heights);
+    std::shared_ptr<const Material> base;
+    if (auto st = load_microsurface_colors(scene, i, config, options, colors, base, provenance); !st)
+        return st.error();
+    return Material{std::move(provenance), ColorLayer{},
+                    MicrosurfaceDriver{std::move(*micro), 1.0 / length(surface.mapping.u_axis), std::move(colors),
+                                       std::move(base)}};
 }
 
-// A textured displacement, and a clamp height map's domain checked against
-// its heights.
-Status load_displacement(const Scene& scene, std::size_t i, const MaterialOptions& options, SurfaceMaterial& m)
+// A textured displacement, a clamp height map's domain checked against its
+// heights, and its colours.
+Expected<Material> load_displacement_material(const Scene& scene, std::size_t i, const ColorConfig& config,
+                                              const MaterialOptions& options, MaterialProvenance provenance,
+                                              std::optional<ColorLayer> heights)
 {
     const Surface& surface = scene.surfaces[i];
     const DisplacementSource& source = *surface.material.displacement;
@@ -289,7 +378,7 @@ Status load_displacement(const Scene& scene, std::size_t i, const MaterialOption
     o.threads = options.threads;
     auto texture = DisplacementTexture::load(o);
     if (!texture) return located(texture.error(), where(scene, i, "displacement"));
-    if (m.height_map) {
+    if (heights) {
         const int n = texture->size();
         double lo = texture->texel_height(0, 0), hi = lo;
         for (int j = 0; j < n; ++j)
@@ -297,54 +386,19 @@ Status load_displacement(const Scene& scene, std::size_t i, const MaterialOption
                 lo = std::min(lo, texture->texel_height(k, j));
                 hi = std::max(hi, texture->texel_height(k, j));
             }
-        if (auto st = check_domain(material_layer(scene, i), m, lo, hi, "the displacement's heights, min and max");
+        if (auto st = check_domain(material_layer(scene, i), heights->map, lo, hi,
+                                   "the displacement's heights, min and max");
             !st)
-            return st;
+            return st.error();
     }
-    m.displacement.emplace(std::move(*texture));
-    m.height_scale = 1.0 / length(surface.mapping.u_axis);
-    return ok();
-}
-
-// A slope colour map (sec. 5.2): a steepness gradient over degrees, or a
-// slope-vector image.
-Status load_slope_map(const Scene& scene, std::size_t i, const ColorConfig& config, SurfaceMaterial& m)
-{
-    const SlopeColorMapSource& source = *scene.surfaces[i].material.slope_colormap;
-    const std::string prefix = where(scene, i, "slope_colormap");
-    if (source.kind == SlopeMapKind::Steepness) {
-        auto map = load_color_map(gradient_load_options(source.image_path, source.domain_min, source.domain_max,
-                                                        source.wrap, source.colorspace),
-                                  config);
-        if (!map) return located(map.error(), prefix);
-        m.slope_map = SteepnessColorMap{std::move(map->map)};
-    } else {
-        SlopeVectorColorMapLoadOptions load;
-        load.path = source.image_path;
-        load.colorspace = source.colorspace;
-        load.s_max = source.max_slope;
-        auto map = load_slope_vector_color_map(load, config);
-        if (!map) return located(map.error(), prefix);
-        m.slope_map = std::move(map->map);
-    }
-    m.slope_map_path = source.image_path;
-    return ok();
-}
-
-// A base layer: C0 and its driver, loaded as a plain material's (its table
-// the default one).
-Status load_base_layer(const Scene& scene, std::size_t i, const ColorConfig& config, const MaterialOptions& options,
-                       SurfaceMaterial& m)
-{
-    const BaseLayerSource& source = *scene.surfaces[i].material.base;
-    const LayerSource layer{scene, i, source.colormap, source.driver, "base/"};
-    MaterialOptions base_options = options;
-    base_options.tables.tolerance = 0;  // the default table
-    auto base = std::make_shared<SurfaceMaterial>();
-    if (auto st = load_colormap(layer, config, base_options, *base); !st) return st;
-    if (auto st = load_driver(layer, base_options, *base); !st) return st;
-    m.base = std::move(base);
-    return ok();
+    MicrosurfaceColors colors;
+    colors.height = std::move(heights);
+    std::shared_ptr<const Material> base;
+    if (auto st = load_microsurface_colors(scene, i, config, options, colors, base, provenance); !st)
+        return st.error();
+    return Material{std::move(provenance), ColorLayer{},
+                    DisplacementDriver{std::move(*texture), 1.0 / length(surface.mapping.u_axis), std::move(colors),
+                                       std::move(base)}};
 }
 
 Status refuse_noise_for_exact(const Scene& scene, std::size_t i)
@@ -358,59 +412,63 @@ Status refuse_noise_for_exact(const Scene& scene, std::size_t i)
 
 }  // namespace
 
-Expected<std::vector<SurfaceMaterial>> prepare_materials(const Scene& scene, const ColorConfig& config,
-                                                         const MaterialOptions& options)
+Expected<std::vector<Material>> prepare_materials(const Scene& scene, const ColorConfig& config,
+                                                  const MaterialOptions& options)
 {
-    std::vector<SurfaceMaterial> materials(scene.surfaces.size());
+    std::vector<Material> materials;
+    materials.reserve(scene.surfaces.size());
     for (std::size_t i = 0; i < scene.surfaces.size(); ++i) {
-        const Material& material = scene.surfaces[i].material;
-        SurfaceMaterial& m = materials[i];
-        m.height_map = material.has_microsurface() && material.has_colormap();
-        if (material.has_colormap())
-            if (auto st = load_colormap(material_layer(scene, i), config, options, m); !st) return st.error();
+        const MaterialSource& source = scene.surfaces[i].material;
+        MaterialProvenance provenance;
+        ColorLayer color;  // C0, or a microsurface's C_h
+        if (source.has_colormap())
+            if (auto st = load_colormap(material_layer(scene, i), config, options, color, provenance); !st)
+                return st.error();
         if (options.histograms)
             if (auto st = refuse_noise_for_exact(scene, i); !st) return st.error();
-        if (material.has_microsurface()) {
-            if (auto st = material.microsurface ? load_microsurface(scene, i, m) : load_displacement(scene, i, options, m);
-                !st)
-                return st.error();
-            if (material.slope_colormap)
-                if (auto st = load_slope_map(scene, i, config, m); !st) return st.error();
-            if (material.base)
-                if (auto st = load_base_layer(scene, i, config, options, m); !st) return st.error();
-            m.combine = material.combine;
-            if (!m.height_map) continue;  // no table of its own
-        } else {
-            if (auto st = load_driver(material_layer(scene, i), options, m); !st) return st.error();
-            if (options.histograms)
-                if (auto st = load_histograms(scene, i, options, m); !st) return st.error();
-        }
+        std::optional<ColorLayer> heights;
+        if (source.has_microsurface() && source.has_colormap()) heights = std::move(color);
+        auto material =
+            !source.has_microsurface()
+                ? load_driven_material(material_layer(scene, i), options, std::move(provenance), std::move(color))
+            : source.microsurface
+                ? load_microsurface_material(scene, i, config, options, std::move(provenance), std::move(heights))
+                : load_displacement_material(scene, i, config, options, std::move(provenance), std::move(heights));
+        if (!material) return material.error();
+        Material& m = materials.emplace_back(std::move(*material));
+        if (auto* texture = std::get_if<TextureDriver>(&m.driver); texture && options.histograms)
+            if (auto st = load_histograms(scene, i, options, *texture, m.provenance); !st) return st.error();
+        if (source.has_microsurface() && !source.has_colormap()) continue;  // no table of its own
         TableChoiceOptions tables = options.tables;
         tables.threads = options.threads;
-        if (auto st = choose_surface_table(scene, i, materials[i], tables); !st) return st.error();
+        if (auto st = choose_surface_table(scene, i, table_layer(m), tables); !st) return st.error();
     }
     return materials;
 }
 
-bool exact_filterable(const std::vector<SurfaceMaterial>& materials)
+bool exact_filterable(const std::vector<Material>& materials)
 {
-    for (const SurfaceMaterial& m : materials)
-        if (!m.layered() &&  // a microsurface's <C_h, D_h> is exact without histograms (height_color.h)
-            (!m.texture || !m.texture->has_level0() ||
-             m.texture->distinct_values() > static_cast<std::size_t>(kHistogramMaxValues)))
+    for (const Material& m : materials) {
+        if (is_microsurface(m)) continue;  // a microsurface's <C_h, D_h> is exact without histograms (height_color.h)
+        const auto* texture = std::get_if<TextureDriver>(&m.driver);
+        if (!texture || !texture->texture.has_level0() ||
+            texture->texture.distinct_values() > static_cast<std::size_t>(kHistogramMaxValues))
             return false;
+    }
     return true;
 }
 
-Status prepare_histograms(const Scene& scene, std::vector<SurfaceMaterial>& materials, const MaterialOptions& options)
+Status prepare_histograms(const Scene& scene, std::vector<Material>& materials, const MaterialOptions& options)
 {
     if (materials.size() != scene.surfaces.size())
         return bad_input("histograms: " + std::to_string(materials.size()) + " materials for " +
                          std::to_string(scene.surfaces.size()) + " surfaces");
     for (std::size_t i = 0; i < materials.size(); ++i) {
-        if (materials[i].histograms || materials[i].layered()) continue;
+        auto* texture = std::get_if<TextureDriver>(&materials[i].driver);
+        if ((texture && texture->histograms) || is_microsurface(materials[i])) continue;
         if (auto st = refuse_noise_for_exact(scene, i); !st) return st;
-        if (auto st = load_histograms(scene, i, options, materials[i]); !st) return st;
+        if (!texture) continue;  // a noise driver on a surface the scene says is a texture's: nothing to bake from
+        if (auto st = load_histograms(scene, i, options, *texture, materials[i].provenance); !st) return st;
     }
     return ok();
 }

@@ -28,7 +28,7 @@ Status check_optional(const std::optional<double>& value, const char* name, cons
 
 }  // namespace
 
-Status choose_surface_table(const Scene& scene, std::size_t surface, SurfaceMaterial& material,
+Status choose_surface_table(const Scene& scene, std::size_t surface, ColorLayer& layer,
                             const TableChoiceOptions& options)
 {
     if (auto st = check_optional(options.tolerance, "--tolerance", "a CIEDE2000 difference > 0"); !st) return st;
@@ -51,9 +51,9 @@ Status choose_surface_table(const Scene& scene, std::size_t surface, SurfaceMate
         search.sigma_max = range->sigma_max;
         search.seed = options.seed;
         search.threads = options.threads;
-        auto found = find_smallest_table(material.map, search);
+        auto found = find_smallest_table(layer.map, search);
         if (!found) return located(scene, surface, found.error());
-        material.table = std::move(found->table);
+        layer.table = std::move(found->table);
         fit.tolerance = *tolerance;
         fit.statistic = quantile_name(options.quantile);
         fit.error = found->error;
@@ -62,25 +62,25 @@ Status choose_surface_table(const Scene& scene, std::size_t surface, SurfaceMate
         fit.candidates = static_cast<int>(found->trials.size());
     }
     fit.plain_bound = options.plain_bound ? *options.plain_bound : tolerance ? kPlainLookupFraction * *tolerance : 0.0;
-    material.plain = PlainLookupSigma();
+    layer.plain = PlainLookupSigma();
     if (fit.plain_bound > 0) {
         PlainLookupOptions plain;
         plain.bound = fit.plain_bound;
-        plain.sigma_cap = material.table.axes().sigma_max;
+        plain.sigma_cap = layer.table.axes().sigma_max;
         plain.threads = options.threads;
-        auto sigma = plain_lookup_sigma(material.map, plain);
+        auto sigma = plain_lookup_sigma(layer.map, plain);
         if (!sigma) return located(scene, surface, sigma.error());
-        material.plain = std::move(*sigma);
+        layer.plain = std::move(*sigma);
     }
-    material.fit = std::move(fit);
+    layer.fit = std::move(fit);
     return ok();
 }
 
-Status choose_surface_tables(const Scene& scene, std::vector<SurfaceMaterial>& materials,
+Status choose_surface_tables(const Scene& scene, std::vector<Material>& materials,
                              const TableChoiceOptions& options)
 {
     for (std::size_t i = 0; i < materials.size(); ++i)
-        if (auto st = choose_surface_table(scene, i, materials[i], options); !st) return st;
+        if (auto st = choose_surface_table(scene, i, table_layer(materials[i]), options); !st) return st;
     return ok();
 }
 

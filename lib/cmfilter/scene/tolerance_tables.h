@@ -7,33 +7,34 @@
 //     sigma_max the largest sigma that surface's driver produces
 //     (largest_surface_sigma, driver_sigma_range.h), the same search and
 //     sigma range as `bake-colormap --tolerance DE --for SCENE`;
-//   - the small-sigma shortcut: material.plain, the sigma per mean below which
+//   - the small-sigma shortcut: layer.plain, the sigma per mean below which
 //     the gaussian method takes C0(mean) directly, where the exact T stays
 //     within `plain_bound` CIEDE2000 of C0 (plain_lookup.h). By
 //     default the bound is kPlainLookupFraction of the tolerance for a fitted
 //     table, and the shortcut is off for a table that was not fitted.
 #pragma once
 
-#include "cmfilter/util/error.h"
+#include "cmfilter/scene/material.h"
 #include "cmfilter/scene/scene.h"
-#include "cmfilter/scene/scene_materials.h"
-
+#include "cmfilter/tables/color_layer.h"
 #include "cmfilter/tables/table_fit.h"
+#include "cmfilter/util/error.h"
 
 #include <cstddef>
 #include <vector>
 
 namespace cmfilter {
 
-// Fits surface `surface`'s table (material.table, material.fit) and sets its
-// shortcut (material.plain). BadInput for an out-of-range tolerance or bound (named as
+// Fits surface `surface`'s table (layer.table, layer.fit) over its map
+// (layer.map) and sets its shortcut (layer.plain). BadInput for an
+// out-of-range tolerance or bound (named as
 // --tolerance / --shortcut), or when no table of the search grid meets the
 // tolerance; the errors of largest_surface_sigma. Messages name the surface.
-Status choose_surface_table(const Scene& scene, std::size_t surface, SurfaceMaterial& material,
+Status choose_surface_table(const Scene& scene, std::size_t surface, ColorLayer& layer,
                             const TableChoiceOptions& options);
 
-// choose_surface_table for every surface, in order.
-Status choose_surface_tables(const Scene& scene, std::vector<SurfaceMaterial>& materials,
+// choose_surface_table for every surface's table layer (material.h), in order.
+Status choose_surface_tables(const Scene& scene, std::vector<Material>& materials,
                              const TableChoiceOptions& options);
 
 }  // namespace cmfilter

@@ -1,12 +1,12 @@
 // The gaussian method's colour for one filtered footprint (a pixel, or one
 // probe of it) with driver mean and standard deviation sigma (sec. 4.2):
-// T(mean, sigma), the bilinear lookup of the material's table (eq. 10), or,
-// where sigma < material.plain.below(mean), C0(mean) itself (the small-sigma
+// T(mean, sigma), the bilinear lookup of the colour layer's table (eq. 10),
+// or, where sigma < layer.plain.below(mean), C0(mean) itself (the small-sigma
 // shortcut: there T equals C0 within the shortcut's bound, plain_lookup.h).
 #pragma once
 
 #include "cmfilter/color/color.h"
-#include "cmfilter/scene/scene_materials.h"
+#include "cmfilter/tables/color_layer.h"
 
 #include <cstddef>
 
@@ -18,14 +18,14 @@ struct AlbedoCounts {
     std::size_t plain = 0;
 };
 
-inline Rgb gaussian_albedo(const SurfaceMaterial& material, double mean, double sigma, AlbedoCounts& counts)
+inline Rgb gaussian_albedo(const ColorLayer& layer, double mean, double sigma, AlbedoCounts& counts)
 {
     ++counts.footprints;
-    if (sigma < material.plain.below(mean)) {
+    if (sigma < layer.plain.below(mean)) {
         ++counts.plain;
-        return material.map.evaluate(mean);
+        return layer.map.evaluate(mean);
     }
-    return material.table.lookup(mean, sigma);
+    return layer.table.lookup(mean, sigma);
 }
 
 }  // namespace cmfilter

@@ -81,14 +81,14 @@ json snake_patch(double view, double light)
 
 struct Prepared {
     Scene scene;
-    std::vector<SurfaceMaterial> materials;
+    std::vector<Material> materials;
 };
 
 Prepared prepare(const json& text)
 {
     auto scene = parse_scene(text.dump(), std::string(CMFILTER_SOURCE_DIR) + "/examples/scenes/snake-test.json");
     REQUIRE_MESSAGE(scene, (scene ? "" : scene.error().message));
-    std::vector<SurfaceMaterial> materials = prepared_materials(*scene, 2);
+    std::vector<Material> materials = prepared_materials(*scene, 2);
     return {std::move(*scene), std::move(materials)};
 }
 
@@ -170,11 +170,11 @@ TEST_CASE("the sampled slope layer seen from above is the surface's mean colour,
 {
     const Prepared p = prepare(snake_patch(0, 0));
     REQUIRE(p.materials.size() == 1);
-    const SurfaceMaterial& material = p.materials[0];
-    REQUIRE(material.displacement);
-    REQUIRE(material.slope_map);
-    const DisplacementTexture* texture = &*material.displacement;
-    const SteepnessColorMap& map = std::get<SteepnessColorMap>(*material.slope_map);
+    const DisplacementDriver* material = std::get_if<DisplacementDriver>(&p.materials[0].driver);
+    REQUIRE(material);
+    REQUIRE(material->colors.slope);
+    const DisplacementTexture* texture = &material->texture;
+    const SteepnessColorMap& map = std::get<SteepnessColorMap>(*material->colors.slope);
     Rgb grid;
     const int n = 512;
     for (int j = 0; j < n; ++j)

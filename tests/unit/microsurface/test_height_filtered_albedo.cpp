@@ -144,7 +144,7 @@ double largest_difference(const Rgb& a, const Rgb& b)
 // The colour table's own lookup error about (mean, sigma): its largest
 // difference from the brute-force convolution on a 5 x 5 grid of half value
 // cells and +-10% in sigma around the point (within the table's sigma range).
-double local_table_error(const SurfaceMaterial& m, double mean, double sigma)
+double local_table_error(const ColorLayer& m, double mean, double sigma)
 {
     const TableAxes& ax = m.table.axes();
     const double half_cell = 0.5 * (ax.value_last() - ax.value_first()) / (ax.values - 1);
@@ -167,10 +167,10 @@ TEST_CASE("the albedo of an unresolved footprint matches Smith's integral and qu
     const MicrosurfaceFootprint f = filter_microsurface(surface, 0.61, -1.7, 1e6 + 0.37, 0.0, 0.0, 1e6 + 0.59);
     CHECK(std::fabs(f.mean_height) < 1e-9);
     CHECK(f.sigma_h == doctest::Approx(0.008).epsilon(1e-9));
-    const SurfaceMaterial material = microsurface_test_material(40, 64, 0.008);
+    const ColorLayer heights = microsurface_test_layer(40, 64, 0.008);
     auto moment_table = HeightMomentTable::create();
     REQUIRE(moment_table);
-    const double slope = steepest_map_slope(material.map);
+    const double slope = steepest_map_slope(heights.map);
     AlbedoCounts counts;
     // (theta_o, phi_o, theta_i, phi_i): head-on (L = 0) to both grazing (L in the thousands).
     struct Case {
@@ -194,11 +194,11 @@ TEST_CASE("the albedo of an unresolved footprint matches Smith's integral and qu
         CHECK(q.total == doctest::Approx(1).epsilon(1e-6));  // the grid holds all of D_h
 
         const HeightAlbedo exact =
-            height_filtered_albedo(material, f, d, HeightRepresentation::Exact, *moment_table, counts);
+            height_filtered_albedo(heights, f, d, HeightRepresentation::Exact, *moment_table, counts);
         CHECK(exact.lambda_sum == doctest::Approx(L).epsilon(1e-6));
         CHECK(exact.visibility == doctest::Approx(V).epsilon(1e-6));
         CHECK(exact.resolved_visibility == doctest::Approx(1).epsilon(1e-12));  // nothing resolved
-        const Rgb expected = V * q.colour(material.map, f.mean_height);
+        const Rgb expected = V * q.colour(heights.map, f.mean_height);
         CAPTURE(expected.r);
         CAPTURE(exact.albedo.r);
         CHECK(largest_difference(exact.albedo, expected) < 1e-6);
@@ -209,11 +209,11 @@ TEST_CASE("the albedo of an unresolved footprint matches Smith's integral and qu
         // Allowed: the colour table's lookup error there and the moment
         // table's (1e-4 of sigma_h in mean and sigma) times the map's slope.
         const HeightAlbedo moments =
-            height_filtered_albedo(material, f, d, HeightRepresentation::ExactMoments, *moment_table, counts);
-        const double table_error = local_table_error(material, f.mean_height + q.mean, q.sigma);
+            height_filtered_albedo(heights, f, d, HeightRepresentation::ExactMoments, *moment_table, counts);
+        const double table_error = local_table_error(heights, f.mean_height + q.mean, q.sigma);
         CAPTURE(table_error);
         CHECK(table_error < 1e-4);
-        const Rgb gaussian_exact = V * gaussian_reference(material.map, f.mean_height + q.mean, q.sigma);
+        const Rgb gaussian_exact = V * gaussian_reference(heights.map, f.mean_height + q.mean, q.sigma);
         CHECK(largest_difference(moments.albedo, gaussian_exact) <= 2 * table_error + slope * 2e-4 * 0.008 + 1e-7);
         CHECK(moments.visibility == doctest::Approx(V).epsilon(1e-6));
 
@@ -221,17 +221,17 @@ TEST_CASE("the albedo of an unresolved footprint matches Smith's integral and qu
         const double fit_mean = 0.39 * 0.008 * std::log(4.75 * L + 1);
         const double fit_sigma = 0.008 / (1 + 0.26 * std::log(1.13 * L + 1));
         const HeightAlbedo paper =
-            height_filtered_albedo(material, f, d, HeightRepresentation::PaperFit, *moment_table, counts);
+            height_filtered_albedo(heights, f, d, HeightRepresentation::PaperFit, *moment_table, counts);
         CHECK(paper.mean == doctest::Approx(f.mean_height + fit_mean).epsilon(1e-6));
         CHECK(paper.sigma == doctest::Approx(fit_sigma).epsilon(1e-6));
-        const double fit_error = local_table_error(material, f.mean_height + fit_mean, fit_sigma);
-        CHECK(largest_difference(paper.albedo, V * gaussian_reference(material.map, f.mean_height + fit_mean, fit_sigma)) <=
+        const double fit_error = local_table_error(heights, f.mean_height + fit_mean, fit_sigma);
+        CHECK(largest_difference(paper.albedo, V * gaussian_reference(heights.map, f.mean_height + fit_mean, fit_sigma)) <=
               2 * fit_error + 1e-7);
 
         // Naive: the resolved mean's colour, unmasked.
         const HeightAlbedo naive =
-            height_filtered_albedo(material, f, d, HeightRepresentation::Naive, *moment_table, counts);
-        CHECK(largest_difference(naive.albedo, reference_map_color(material.map, f.mean_height)) < 1e-12);
+            height_filtered_albedo(heights, f, d, HeightRepresentation::Naive, *moment_table, counts);
+        CHECK(largest_difference(naive.albedo, reference_map_color(heights.map, f.mean_height)) < 1e-12);
         CHECK(naive.visibility == 1);
     }
     CHECK(largest_l > 1000);  // the sweep reached strongly masked footprints
@@ -256,16 +256,16 @@ TEST_CASE("the exact colour at huge and infinite Lambda sums is that of the high
         }
     // Through the albedo: a view at exactly 90 degrees has Lambda_o infinite,
     // so V = 1 (eq. 13's limit) and the colour is that of L = 1e100.
-    const SurfaceMaterial material = microsurface_test_material(4, 8, 0.01);
+    const ColorLayer heights = microsurface_test_layer(4, 8, 0.01);
     auto moment_table = HeightMomentTable::create();
     REQUIRE(moment_table);
     AlbedoCounts counts;
-    const HeightAlbedo a = height_filtered_albedo(material, hand_footprint(0.002, 0.001, 0.3),
+    const HeightAlbedo a = height_filtered_albedo(heights, hand_footprint(0.002, 0.001, 0.3),
                                                   {kPi / 2, 0.3, degrees(40), 1.2}, HeightRepresentation::Exact,
                                                   *moment_table, counts);
     CHECK(a.visibility == 1);
     CHECK(a.lambda_sum == kInf);
-    const Rgb expected = height_quadrature(kInf, 0.001).colour(material.map, 0.002);
+    const Rgb expected = height_quadrature(kInf, 0.001).colour(heights.map, 0.002);
     CHECK(largest_difference(a.albedo, expected) < 1e-6);
 }
 
@@ -278,7 +278,7 @@ TEST_CASE("a point footprint gives C_h at the point's height, shadowed only by t
     // but naive): Smith's V_r = Phi(h / sigma_h)^Lambda(theta_i) (eq. 2) for
     // the whole surface's sigma_h and slopes, 1 with the light overhead.
     const GaussianMicrosurface surface = test_microsurface(0.008, 64, 3);
-    const SurfaceMaterial material = microsurface_test_material(4, 16, 0.008);
+    const ColorLayer heights = microsurface_test_layer(4, 16, 0.008);
     auto moment_table = HeightMomentTable::create();
     REQUIRE(moment_table);
     AlbedoCounts counts;
@@ -295,7 +295,7 @@ TEST_CASE("a point footprint gives C_h at the point's height, shadowed only by t
         CHECK(f.mean_height == doctest::Approx(h).epsilon(1e-12).scale(0.008));
         CHECK(f.sigma_h == 0);
         CHECK((f.slope_xx == 0 && f.slope_xy == 0 && f.slope_yy == 0));
-        const Rgb colour = reference_map_color(material.map, h);
+        const Rgb colour = reference_map_color(heights.map, h);
         for (const HeightDirections& d : directions) {
             const double lambda_r = smith_lambda_simpson(d.theta_i, surface_sigma_s(surface, d.phi_i));
             const double shadowing = std::pow(0.5 * std::erfc(-h / (0.008 * std::sqrt(2.0))), lambda_r);
@@ -304,7 +304,7 @@ TEST_CASE("a point footprint gives C_h at the point's height, shadowed only by t
                 CAPTURE(static_cast<int>(r));
                 CAPTURE(d.theta_o);
                 CAPTURE(d.theta_i);
-                const HeightAlbedo a = height_filtered_albedo(material, f, d, r, *moment_table, counts);
+                const HeightAlbedo a = height_filtered_albedo(heights, f, d, r, *moment_table, counts);
                 CHECK(a.lambda_sum == 0);
                 CHECK(a.visibility == 1);
                 const double vr = r == HeightRepresentation::Naive ? 1.0 : shadowing;

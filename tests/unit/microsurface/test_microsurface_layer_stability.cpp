@@ -68,7 +68,7 @@ SlopeVectorColorMap vector_map()
 // A material and the range its layers combine into (before V).
 struct Case {
     std::string name;
-    SurfaceMaterial material;
+    MicrosurfaceColors material;
     ColorRange range;
 };
 
@@ -76,29 +76,29 @@ std::vector<Case> cases()
 {
     std::vector<Case> out;
     for (const SlopeMap& map : {SlopeMap{steepness_map()}, SlopeMap{repeating_steepness_map()}, SlopeMap{vector_map()}}) {
-        SurfaceMaterial m;
-        m.slope_map = map;
+        MicrosurfaceColors m;
+        m.slope = map;
         out.push_back({"slope map " + std::to_string(map.index()), m, slope_range(map)});
     }
     const ColorRange heights = color_range(microsurface_test_map());
     {
         // k1 C_h + k2 C_s.
-        SurfaceMaterial m = microsurface_test_material(2, 16, 0.05);
-        m.height_map = true;
-        m.slope_map = SlopeMap{vector_map()};
+        MicrosurfaceColors m;
+        m.height = microsurface_test_layer(2, 16, 0.05);
+        m.slope = SlopeMap{vector_map()};
         m.combine.mode = CombineMode::Sum;
         m.combine.height = 0.6;
         m.combine.slope = 1.4;
-        const ColorRange s = slope_range(*m.slope_map);
+        const ColorRange s = slope_range(*m.slope);
         out.push_back({"sum", m, {0.6 * heights.lo + 1.4 * s.lo, 0.6 * heights.hi + 1.4 * s.hi}});
     }
     {
         // C_h C_s.
-        SurfaceMaterial m = microsurface_test_material(2, 16, 0.05);
-        m.height_map = true;
-        m.slope_map = SlopeMap{steepness_map()};
+        MicrosurfaceColors m;
+        m.height = microsurface_test_layer(2, 16, 0.05);
+        m.slope = SlopeMap{steepness_map()};
         m.combine.mode = CombineMode::Product;
-        const ColorRange s = slope_range(*m.slope_map);
+        const ColorRange s = slope_range(*m.slope);
         const auto times = [](const Rgb& a, const Rgb& b) { return Rgb{a.r * b.r, a.g * b.g, a.b * b.b}; };
         out.push_back({"product", m, {times(heights.lo, s.lo), times(heights.hi, s.hi)}});
     }
@@ -328,9 +328,8 @@ TEST_CASE("displacement layers stay finite and in range on every angle, footprin
     int checked = 0, failures = 0;
     for (const auto& [name, texture] : displacements())
         for (const SlopeMap& map : {SlopeMap{steepness_map()}, SlopeMap{vector_map()}}) {
-            SurfaceMaterial m;
-            m.displacement = texture;
-            m.slope_map = map;
+            MicrosurfaceColors m;
+            m.slope = map;
             const ColorRange range = slope_range(map);
             for (const Representation& r : {kNaive, kGaussian, kGaussianExact, kExact})
                 for (const SlopeShading shading : {SlopeShading::Uncorrelated, SlopeShading::Correlated})
@@ -354,7 +353,7 @@ TEST_CASE("displacement layers stay finite and in range on every angle, footprin
                                 const HeightDirections hd{degrees(dir.theta_o), dir.phi_o, degrees(dir.theta_i),
                                                           dir.phi_i};
                                 const MicrosurfaceLayers a = microsurface_layers(
-                                    m, f, ResolvedSlope{d.slope_x, d.slope_y}, hd, options, table, counts, &p);
+                                    m, f, ResolvedSlope{d.slope_x, d.slope_y}, hd, options, table, counts, &texture, &p);
                                 ++checked;
                                 const bool ok = std::isfinite(a.visibility) && a.visibility >= 0 &&
                                                 a.visibility <= 1 && is_finite(a.shadowed) &&

@@ -58,10 +58,10 @@ SlopeVectorColorMap vector_map()
 }
 
 // A microsurface material with only a slope map.
-SurfaceMaterial slope_material(const SlopeMap& map)
+MicrosurfaceColors slope_material(const SlopeMap& map)
 {
-    SurfaceMaterial m;
-    m.slope_map = map;
+    MicrosurfaceColors m;
+    m.slope = map;
     return m;
 }
 
@@ -227,10 +227,10 @@ TEST_CASE("combine_microsurface_albedo shadows the base layer by the mean visibi
 
 TEST_CASE("microsurface_layers sums or multiplies C_h of the resolved height and C_s of the resolved slope, naively")
 {
-    SurfaceMaterial m = microsurface_test_material(2, 16, 0.05);
-    m.height_map = true;
+    MicrosurfaceColors m;
+    m.height = microsurface_test_layer(2, 16, 0.05);
     const SlopeMap slope_map = vector_map();
-    m.slope_map = slope_map;
+    m.slope = slope_map;
     const HeightMomentTable table = *HeightMomentTable::create();
     MicrosurfaceLayerOptions options;
     options.heights = HeightRepresentation::Naive;
@@ -238,7 +238,7 @@ TEST_CASE("microsurface_layers sums or multiplies C_h of the resolved height and
     const MicrosurfaceFootprint f = hand_footprint(0.012, 0.004, 0.3);
     const ResolvedSlope slope{0.35, -0.6};
     const HeightDirections d{degrees(40), 0.3, degrees(25), 2.0};
-    const Rgb h = reference_map_color(m.map, 0.012), s = evaluate(slope_map, 0.35, -0.6);
+    const Rgb h = reference_map_color(m.height->map, 0.012), s = evaluate(slope_map, 0.35, -0.6);
     AlbedoCounts counts;
 
     m.combine.mode = CombineMode::Sum;
@@ -253,7 +253,7 @@ TEST_CASE("microsurface_layers sums or multiplies C_h of the resolved height and
     for (int k = 0; k < 3; ++k) CHECK(product.shadowed[k] == doctest::Approx(h[k] * s[k]).epsilon(1e-6));
 
     // Without the height map, the slope layer alone (weighted in a sum).
-    m.height_map = false;
+    m.height.reset();
     m.combine.mode = CombineMode::Sum;
     const MicrosurfaceLayers alone = microsurface_layers(m, f, slope, d, options, table, counts);
     for (int k = 0; k < 3; ++k) CHECK(alone.shadowed[k] == doctest::Approx(1.25 * s[k]).epsilon(1e-12));
@@ -290,7 +290,7 @@ TEST_CASE("the exact slope layer of a far footprint matches eq. 20 averaged over
     AlbedoCounts counts;
     for (const SlopeMap& map : {SlopeMap{steepness_map()}, SlopeMap{vector_map()}}) {
         CAPTURE(map.index());
-        const SurfaceMaterial m = slope_material(map);
+        const MicrosurfaceColors m = slope_material(map);
         const std::vector<Rgb> colours = slope_colors(map, gradients);
         double sum = 0, worst = 0;
         int cases = 0;
@@ -330,7 +330,7 @@ TEST_CASE("without a height map the visibility of a far footprint is eq. 13 with
     const MicrosurfaceFootprint f = far_footprint(surface, slope);
     const HeightMomentTable table = *HeightMomentTable::create();
     for (const SlopeMap& map : {SlopeMap{steepness_map()}, SlopeMap{vector_map()}}) {
-        const SurfaceMaterial m = slope_material(map);
+        const MicrosurfaceColors m = slope_material(map);
         for (const auto slopes : {SlopeRepresentation::Gaussian, SlopeRepresentation::Exact}) {
             MicrosurfaceLayerOptions options;
             options.heights = HeightRepresentation::PaperFit;
@@ -397,7 +397,7 @@ TEST_CASE("the naive slope layer is the map at the brute-force mean gradient ove
         CHECK(slope.y == doctest::Approx(gy).epsilon(1e-3).scale(0.01));
         const MicrosurfaceFootprint f = filter_microsurface(surface, p.u, p.v, p.e1u, p.e1v, p.e2u, p.e2v);
         for (const SlopeMap& map : {SlopeMap{steepness_map()}, SlopeMap{vector_map()}}) {
-            const SurfaceMaterial m = slope_material(map);
+            const MicrosurfaceColors m = slope_material(map);
             for (const double theta : {0.0, 45.0, 85.0}) {
                 const HeightDirections d{degrees(theta), 0.8, degrees(60), 2.0};
                 AlbedoCounts counts;

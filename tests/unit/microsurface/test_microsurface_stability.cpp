@@ -222,8 +222,8 @@ TEST_CASE("the resolved visibility stays in 0 to 1 and is Phi of the height to t
 
 TEST_CASE("the height-filtered albedo of every representation stays finite and in range on all sweeps")
 {
-    const SurfaceMaterial material = microsurface_test_material(4, 8, 0.05);
-    const ColorRange range = color_range(material.map);
+    const ColorLayer heights = microsurface_test_layer(4, 8, 0.05);
+    const ColorRange range = color_range(heights.map);
     auto table = HeightMomentTable::create();
     REQUIRE(table);
     const std::vector<double> thetas = sweep_thetas();
@@ -239,7 +239,7 @@ TEST_CASE("the height-filtered albedo of every representation stays finite and i
                             const HeightDirections d{theta_o, 0.4, theta_i, -2.2};
                             const double mean_height = r.mean_height;
                             const HeightAlbedo a = height_filtered_albedo(
-                                material, hand_footprint(mean_height, sigma_h, sigma_s, r.sigma_h, r.sigma_s), d,
+                                heights, hand_footprint(mean_height, sigma_h, sigma_s, r.sigma_h, r.sigma_s), d,
                                 representation, *table, counts);
                             ++evaluated;
                             const bool finite = is_finite(a.albedo) && std::isfinite(a.mean) &&
@@ -275,11 +275,11 @@ TEST_CASE("the height-filtered albedo of every representation stays finite and i
                         }
     CHECK(evaluated == 4 * kSigmaH.size() * kSigmaS.size() * std::size(kResolved) * thetas.size() * thetas.size());
     // Naive takes no masking: V = 1 and the resolved mean's colour.
-    const HeightAlbedo naive = height_filtered_albedo(material, hand_footprint(0.021, 0.008, 0.35),
+    const HeightAlbedo naive = height_filtered_albedo(heights, hand_footprint(0.021, 0.008, 0.35),
                                                       {kPi / 2, 0, kPi / 2, 0}, HeightRepresentation::Naive, *table,
                                                       counts);
     CHECK(naive.visibility == 1);
-    CHECK(naive.albedo.r == doctest::Approx(reference_map_color(material.map, 0.021).r).epsilon(1e-12));
+    CHECK(naive.albedo.r == doctest::Approx(reference_map_color(heights.map, 0.021).r).epsilon(1e-12));
 }
 
 TEST_CASE("correlated masking and shadowing stays finite and in range, and meets eq. 13 where it should")

@@ -29,7 +29,7 @@ namespace {
 // tests do not use the gaussian method's colours).
 struct PlaneScene {
     Scene scene;
-    std::vector<SurfaceMaterial> materials;
+    std::vector<Material> materials;
 };
 
 PlaneScene plane_scene(int w, int h)
@@ -227,8 +227,8 @@ TEST_CASE("the gaussian method takes C0 of each probe's mean where the small-sig
     CHECK(lookups->footprints > 0);
     CHECK(lookups->plain_footprints == 0);
 
-    const ColorMap& map = s.materials[0].map;
-    s.materials[0].plain = PlainLookupSigma(map.vmin - 100, map.texel_width(), std::vector<float>(100000, 0.11f));
+    const ColorMap& map = s.materials[0].color.map;
+    s.materials[0].color.plain = PlainLookupSigma(map.vmin - 100, map.texel_width(), std::vector<float>(100000, 0.11f));
     auto shortcut = render(s.scene, s.materials, options);
     options.method = RenderMethod::Naive;
     auto naive = render(s.scene, s.materials, options);
@@ -239,7 +239,7 @@ TEST_CASE("the gaussian method takes C0 of each probe's mean where the small-sig
     CHECK(shortcut->rgb == naive->rgb);
     CHECK(shortcut->rgb != lookups->rgb);
     // A threshold below every probe's sigma changes nothing.
-    s.materials[0].plain = PlainLookupSigma(map.vmin - 100, map.texel_width(), std::vector<float>(100000, 0.09f));
+    s.materials[0].color.plain = PlainLookupSigma(map.vmin - 100, map.texel_width(), std::vector<float>(100000, 0.09f));
     options.method = RenderMethod::Gaussian;
     auto below = render(s.scene, s.materials, options);
     REQUIRE(below);

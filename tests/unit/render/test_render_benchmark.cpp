@@ -21,7 +21,7 @@ namespace {
 // noise cells, so 1024 rays per pixel leave visible noise in the reference.
 struct FineNoiseSphere {
     Scene scene;
-    std::vector<SurfaceMaterial> materials;
+    std::vector<Material> materials;
 };
 
 FineNoiseSphere fine_noise_sphere()
@@ -108,7 +108,7 @@ TEST_CASE("bench compares the pixels a surface covers in part: the horizon row, 
     plane.mapping.u_axis = {0.5, 0, 0};
     plane.mapping.v_axis = {0, 0, 0.5};
     scene.surfaces.push_back(plane);
-    std::vector<SurfaceMaterial> materials;
+    std::vector<Material> materials;
     materials.push_back(cmfilter_test::terrain_fbm_material());
 
     const double kPi = 3.14159265358979323846;

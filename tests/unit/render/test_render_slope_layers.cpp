@@ -80,14 +80,14 @@ json combined_material()
 
 struct Prepared {
     Scene scene;
-    std::vector<SurfaceMaterial> materials;
+    std::vector<Material> materials;
 };
 
 Prepared prepare(const json& text, const std::string& path)
 {
     auto scene = parse_scene(text.dump(), path);
     REQUIRE_MESSAGE(scene, (scene ? "" : scene.error().message));
-    std::vector<SurfaceMaterial> materials = prepared_materials(*scene, 2);
+    std::vector<Material> materials = prepared_materials(*scene, 2);
     return {std::move(*scene), std::move(materials)};
 }
 
@@ -103,14 +103,29 @@ RenderedImage render_with(const Prepared& p, RenderMethod method, int samples = 
     return std::move(*image);
 }
 
+// A Gaussian microsurface material's driver: its colours and base layer.
+const MicrosurfaceDriver& microsurface_of(const Material& m)
+{
+    REQUIRE(std::holds_alternative<MicrosurfaceDriver>(m.driver));
+    return std::get<MicrosurfaceDriver>(m.driver);
+}
+
+MicrosurfaceDriver& microsurface_of(Material& m)
+{
+    REQUIRE(std::holds_alternative<MicrosurfaceDriver>(m.driver));
+    return std::get<MicrosurfaceDriver>(m.driver);
+}
+
 // The range of the material's combined colour (a sum: weighted sum of the
 // layers' ranges; a product: their product), from the loaded maps' texels.
-ColorRange layers_range(const SurfaceMaterial& m)
+ColorRange layers_range(const Material& material)
 {
+    const MicrosurfaceDriver& d = microsurface_of(material);
+    const MicrosurfaceColors& m = d.colors;
     std::vector<std::pair<ColorRange, double>> layers;
-    if (m.base) layers.push_back({texel_range(m.base->map.texels), m.combine.base});
-    if (m.height_map) layers.push_back({texel_range(m.map.texels), m.combine.height});
-    if (m.slope_map) layers.push_back({slope_range(*m.slope_map), m.combine.slope});
+    if (d.base) layers.push_back({texel_range(d.base->color.map.texels), m.combine.base});
+    if (m.height) layers.push_back({texel_range(m.height->map.texels), m.combine.height});
+    if (m.slope) layers.push_back({slope_range(*m.slope), m.combine.slope});
     ColorRange r;
     if (m.combine.mode == CombineMode::Sum) {
         for (const auto& [range, weight] : layers) {
@@ -217,8 +232,8 @@ TEST_CASE("a product with a constant base colour K renders as K times the slope 
     const Prepared alone = prepare(plane_scene(steepness_material(), 12, 8), kExamples + "slope-render-test.json");
     const Prepared with_base = prepare(plane_scene(product, 12, 8), kExamples + "slope-render-test.json");
     fs::remove_all(dir);
-    REQUIRE(with_base.materials[0].base != nullptr);
-    const std::vector<Rgb>& texels = with_base.materials[0].base->map.texels;
+    REQUIRE(microsurface_of(with_base.materials[0]).base != nullptr);
+    const std::vector<Rgb>& texels = microsurface_of(with_base.materials[0]).base->color.map.texels;
     const Rgb k = texels.front();
     for (const Rgb& t : texels) CHECK((t.r == k.r && t.g == k.g && t.b == k.b));
     CHECK(k.r > 0.1);  // a colour, not black: the check below can fail
@@ -290,7 +305,7 @@ TEST_CASE("the exact render's mean colour of a slope-vector plane matches the re
     // and left to right (s_x -> -s_x) is far from the reference.
     for (const bool vertical : {true, false}) {
         Prepared mirrored{p.scene, p.materials};
-        SlopeVectorColorMap& map = std::get<SlopeVectorColorMap>(*mirrored.materials[0].slope_map);
+        SlopeVectorColorMap& map = std::get<SlopeVectorColorMap>(*microsurface_of(mirrored.materials[0]).colors.slope);
         const std::vector<Rgb> texels = map.texels;
         for (int j = 0; j < map.height; ++j)
             for (int i = 0; i < map.width; ++i)

@@ -92,7 +92,23 @@ Scene texture_scene(const std::string& driver, const Vec3& position, const Vec3&
     return scene;
 }
 
-std::vector<SurfaceMaterial> materials_of(const Scene& scene)
+// A material's texture driver, or null.
+const TextureDriver* texture_driver(const Material& m) { return std::get_if<TextureDriver>(&m.driver); }
+
+// Its filtered texture and histogram pyramid, or null.
+const FilteredTexture* texture_of(const Material& m)
+{
+    const TextureDriver* d = texture_driver(m);
+    return d ? &d->texture : nullptr;
+}
+
+const HistogramTexture* histograms_of(const Material& m)
+{
+    const TextureDriver* d = texture_driver(m);
+    return d && d->histograms ? &*d->histograms : nullptr;
+}
+
+std::vector<Material> materials_of(const Scene& scene)
 {
     auto config = ColorConfig::load("");
     REQUIRE(config);
@@ -131,10 +147,10 @@ TEST_CASE("texture values at texel centres are the texels, t grows downwards, an
     std::vector<float> f(static_cast<std::size_t>(w) * h);
     for (std::size_t i = 0; i < f.size(); ++i) f[i] = static_cast<float>(i) / static_cast<float>(f.size());
     const Scene scene = texture_scene(write_driver("ramp.exr", w, h, f), {0, 1, 0}, {0, 0, 0}, {0, 0, 1}, 1, 4, 4);
-    const std::vector<SurfaceMaterial> materials = materials_of(scene);
-    REQUIRE(materials[0].texture);
-    const FilteredTexture& texture = *materials[0].texture;
-    CHECK(materials[0].moments_baked);
+    const std::vector<Material> materials = materials_of(scene);
+    REQUIRE(texture_of(materials[0]));
+    const FilteredTexture& texture = *texture_of(materials[0]);
+    CHECK(materials[0].provenance.moments_baked);
     CHECK(texture.moments().info().wrap == TextureWrap::Periodic);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
@@ -158,8 +174,8 @@ TEST_CASE("where the footprint is tiny the naive and gaussian mean is the biline
     const std::string driver = write_driver("smooth.exr", size, size, smooth_driver(size, size));
     for (const Vec3& look_at : {Vec3{0.3, 0, 0.2}, Vec3{0.6, 0, 0.8}}) {
         const Scene scene = texture_scene(driver, {0.3, 1, 0.2}, look_at, {0, 0, 1}, 20, 32, 24);
-        const std::vector<SurfaceMaterial> materials = materials_of(scene);
-        const FilteredTexture& texture = *materials[0].texture;
+        const std::vector<Material> materials = materials_of(scene);
+        const FilteredTexture& texture = *texture_of(materials[0]);
         auto camera = Camera::create(scene.camera);
         REQUIRE(camera);
         for (RenderMethod method : {RenderMethod::Naive, RenderMethod::Gaussian}) {
@@ -193,10 +209,10 @@ TEST_CASE("the supersampled colour of a constant driver is C0 of the constant ex
     const float constant = 0.3f;
     const std::string driver = write_driver("constant.exr", 16, 16, std::vector<float>(256, constant));
     const Scene scene = texture_scene(driver, {0, 1, 0}, {0, 0, 0}, {0, 0, 1}, 2, 12, 8);
-    const std::vector<SurfaceMaterial> materials = materials_of(scene);
+    const std::vector<Material> materials = materials_of(scene);
     // Straight above a plane facing it, with no ambient, the shade is the
     // albedo itself: 1 * C0 + 0.
-    const Rgb c0 = materials[0].map.evaluate(constant);
+    const Rgb c0 = materials[0].color.map.evaluate(constant);
     for (RenderMethod method : {RenderMethod::Supersample, RenderMethod::Reference, RenderMethod::Naive}) {
         for (int samples : {1, 16}) {
             RenderOptions options;
@@ -230,7 +246,7 @@ TEST_CASE("two texture references with different seeds differ by at most 0.2 mea
                                 {0, 0.9, 10}, {0, 1, 0}, 64, 48, 27);
     scene.surfaces[0].material.colormap.domain_min = 0.002;
     scene.surfaces[0].material.colormap.domain_max = 0.998;
-    const std::vector<SurfaceMaterial> materials = materials_of(scene);
+    const std::vector<Material> materials = materials_of(scene);
     RenderOptions options;
     options.method = RenderMethod::Reference;
     options.seed = 1;
@@ -250,7 +266,7 @@ TEST_CASE("texture renders do not depend on the thread count")
 {
     const Scene scene = texture_scene(std::string(CMFILTER_SOURCE_DIR) + "/examples/noise-driver.png", {0, 1.5, 0},
                                       {0, 0.9, 10}, {0, 1, 0}, 8, 40, 24);
-    const std::vector<SurfaceMaterial> materials = materials_of(scene);
+    const std::vector<Material> materials = materials_of(scene);
     for (RenderMethod method : {RenderMethod::Naive, RenderMethod::Gaussian, RenderMethod::Supersample}) {
         RenderOptions options;
         options.method = method;
@@ -279,25 +295,25 @@ TEST_CASE("a moments driver reads its texels from cmfilter:source, refuses a dri
 
     SUBCASE("present: the same texels as the image itself")
     {
-        const std::vector<SurfaceMaterial> from_moments = materials_of(scene);
-        REQUIRE(from_moments[0].texture);
-        CHECK_FALSE(from_moments[0].moments_baked);
-        CHECK(from_moments[0].driver_path == driver);
+        const std::vector<Material> from_moments = materials_of(scene);
+        REQUIRE(texture_of(from_moments[0]));
+        CHECK_FALSE(from_moments[0].provenance.moments_baked);
+        CHECK(from_moments[0].provenance.driver_path == driver);
         scene.surfaces[0].material.driver.kind = DriverKind::Image;
-        const std::vector<SurfaceMaterial> from_image = materials_of(scene);
+        const std::vector<Material> from_image = materials_of(scene);
         for (double u : {0.1, 0.37, 0.93})
-            CHECK(from_moments[0].texture->value(u, 0.4) == from_image[0].texture->value(u, 0.4));
+            CHECK(texture_of(from_moments[0])->value(u, 0.4) == texture_of(from_image[0])->value(u, 0.4));
     }
     SUBCASE("gone: naive and gaussian render from the moments alone, the rest name the missing driver")
     {
         const std::string gone = write_driver("gone.exr", size, size, smooth_driver(size, size));
         scene.surfaces[0].material.driver.moments_path = bake_moments(gone, "gone-moments.exr");
-        const std::vector<SurfaceMaterial> with_source = materials_of(scene);
+        const std::vector<Material> with_source = materials_of(scene);
         fs::remove(gone);
-        const std::vector<SurfaceMaterial> without = materials_of(scene);
-        REQUIRE(without[0].texture);
-        CHECK_FALSE(without[0].texture->has_level0());
-        CHECK(with_source[0].texture->has_level0());
+        const std::vector<Material> without = materials_of(scene);
+        REQUIRE(texture_of(without[0]));
+        CHECK_FALSE(texture_of(without[0])->has_level0());
+        CHECK(texture_of(with_source[0])->has_level0());
         const std::string named = "texture-scene: /surfaces/0/material/driver/moments: cannot read driver '" + gone +
                                   "' recorded in '" + scene.surfaces[0].material.driver.moments_path + "'";
         for (RenderMethod method : {RenderMethod::Naive, RenderMethod::Gaussian}) {
@@ -385,7 +401,7 @@ std::vector<float> quantised_driver(int w, int h)
     return f;
 }
 
-std::vector<SurfaceMaterial> exact_materials_of(const Scene& scene)
+std::vector<Material> exact_materials_of(const Scene& scene)
 {
     auto config = ColorConfig::load("");
     REQUIRE(config);
@@ -410,9 +426,9 @@ TEST_CASE("exact on a driver with four values matches the reference within 0.5 m
     const std::vector<float> f = quantised_driver(n, n);
     const double d = 1 / std::tan(kTwoPi / 24);  // fov 30 degrees: 2 units across
     const Scene scene = texture_scene(write_driver("quantised.exr", n, n, f), {0, d, 0}, {0, 0, 0}, {0, 0, 1}, 1, 32, 32);
-    const std::vector<SurfaceMaterial> materials = exact_materials_of(scene);
-    REQUIRE(materials[0].histograms);
-    CHECK(materials[0].histograms->bins() == 4);
+    const std::vector<Material> materials = exact_materials_of(scene);
+    REQUIRE(histograms_of(materials[0]));
+    CHECK(histograms_of(materials[0])->bins() == 4);
     RenderOptions options;
     options.method = RenderMethod::Exact;
     auto exact = render(scene, materials, options);
@@ -447,7 +463,7 @@ TEST_CASE("exact on a driver with four values matches the reference within 0.5 m
             for (long j = 0; j < 32; ++j)
                 for (long i = 0; i < 32; ++i) {
                     const long tx = ((x0 + i) % n + n) % n, ty = ((y0 + j) % n + n) % n;
-                    want += (1.0 / 1024) * materials[0].map.evaluate(f[static_cast<std::size_t>(ty * n + tx)]);
+                    want += (1.0 / 1024) * materials[0].color.map.evaluate(f[static_cast<std::size_t>(ty * n + tx)]);
                 }
             const std::size_t p = static_cast<std::size_t>(y) * 32 + static_cast<std::size_t>(x);
             worst = std::max({worst, std::abs(exact->rgb[3 * p] - want.r), std::abs(exact->rgb[3 * p + 1] - want.g),
@@ -518,7 +534,7 @@ TEST_CASE("texture probes on a footprint of aligned squares give its box mean an
 {
     const std::vector<float> f = smooth_driver(kStripN, kStripN);
     const Scene scene = strip_scene(write_driver("strip-smooth.exr", kStripN, kStripN, f));
-    const std::vector<SurfaceMaterial> materials = materials_of(scene);
+    const std::vector<Material> materials = materials_of(scene);
     auto camera = Camera::create(scene.camera);
     REQUIRE(camera);
     RenderOptions options;
@@ -568,7 +584,7 @@ TEST_CASE("exact follows an anisotropic footprint: the box mean of C0 over a foo
 {
     const std::vector<float> f = quantised_driver(kStripN, kStripN);
     const Scene scene = strip_scene(write_driver("strip-quantised.exr", kStripN, kStripN, f));
-    const std::vector<SurfaceMaterial> materials = exact_materials_of(scene);
+    const std::vector<Material> materials = exact_materials_of(scene);
     auto camera = Camera::create(scene.camera);
     REQUIRE(camera);
     // Against the box mean of C0 over each pixel's 32 x 8 piecewise-constant
@@ -588,7 +604,7 @@ TEST_CASE("exact follows an anisotropic footprint: the box mean of C0 over a foo
                 REQUIRE(hit);
                 Rgb want;
                 for_footprint_texels(hit->hit.u, hit->hit.v, [&](long tx, long ty) {
-                    want += (1.0 / 256) * materials[0].map.evaluate(f[static_cast<std::size_t>(ty * kStripN + tx)]);
+                    want += (1.0 / 256) * materials[0].color.map.evaluate(f[static_cast<std::size_t>(ty * kStripN + tx)]);
                 });
                 const std::size_t p = static_cast<std::size_t>(y) * kStripPixels + static_cast<std::size_t>(x);
                 w = std::max({w, std::abs(exact->rgb[3 * p] - want.r), std::abs(exact->rgb[3 * p + 1] - want.g),

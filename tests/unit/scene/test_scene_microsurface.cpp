@@ -165,14 +165,15 @@ TEST_CASE("the bundled microsurface example loads, and its material gets the sur
     auto materials = prepare_materials(*halved, *config, options);
     REQUIRE_MESSAGE(materials, (materials ? "" : materials.error().message));
     REQUIRE(materials->size() == 1);
-    const SurfaceMaterial& m = (*materials)[0];
-    REQUIRE(m.microsurface.has_value());
-    CHECK_FALSE(m.noise.has_value());
-    CHECK_FALSE(m.texture.has_value());
+    const Material& material = (*materials)[0];
+    REQUIRE(std::holds_alternative<MicrosurfaceDriver>(material.driver));
+    CHECK_FALSE(std::holds_alternative<NoiseDriver>(material.driver));
+    CHECK_FALSE(std::holds_alternative<TextureDriver>(material.driver));
+    const MicrosurfaceDriver& m = std::get<MicrosurfaceDriver>(material.driver);
     CHECK(m.height_scale == 2);
-    CHECK(m.microsurface->sigma_h() == 0.008);
-    CHECK(m.microsurface->tile() == 3.2);
-    CHECK(m.microsurface->cosines().size() == 256);
+    CHECK(m.surface.sigma_h() == 0.008);
+    CHECK(m.surface.tile() == 3.2);
+    CHECK(m.surface.cosines().size() == 256);
 }
 
 // ---- bad microsurfaces ----------------------------------------------------------

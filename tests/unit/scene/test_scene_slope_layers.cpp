@@ -74,7 +74,7 @@ Expected<Scene> parse(const json& scene, const std::string& path = kScenePath)
     return parse_scene(scene.dump(2), path);
 }
 
-const Material& loaded_material(const Expected<Scene>& scene)
+const MaterialSource& loaded_material(const Expected<Scene>& scene)
 {
     REQUIRE_MESSAGE(scene, (scene ? "" : scene.error().message));
     REQUIRE(scene->surfaces.size() == 1);
@@ -93,7 +93,7 @@ TEST_CASE("a steepness slope map loads with its image and the defaults domain 0 
 {
     const json scene = slope_scene();
     const auto loaded = parse(scene);
-    const Material& m = loaded_material(loaded);
+    const MaterialSource& m = loaded_material(loaded);
     REQUIRE(m.slope_colormap.has_value());
     const SlopeColorMapSource& s = *m.slope_colormap;
     CHECK(s.kind == SlopeMapKind::Steepness);
@@ -141,7 +141,7 @@ TEST_CASE("a three-layer material reads its base layer and the weights of its su
 {
     const json scene = three_layer_scene();
     const auto loaded = parse(scene);
-    const Material& m = loaded_material(loaded);
+    const MaterialSource& m = loaded_material(loaded);
     CHECK(m.has_colormap());
     CHECK(m.colormap.image_path == kLuts + "sand-snow.png");
     CHECK(m.colormap.domain_min == -0.03);
@@ -184,7 +184,7 @@ TEST_CASE("a base layer alone is a microsurface material of its own, its driver 
     material(scene)["base"] = json::parse(R"({"colormap": {"image": "../../luts/terrain.png", "domain": [0, 1]},
                                               "driver": {"image": "snake-scales.exr"}})");
     const auto loaded = parse(scene);
-    const Material& m = loaded_material(loaded);
+    const MaterialSource& m = loaded_material(loaded);
     REQUIRE(m.base.has_value());
     CHECK_FALSE(m.slope_colormap.has_value());
     CHECK(m.base->driver.kind == DriverKind::Image);
@@ -380,29 +380,30 @@ TEST_CASE("prepare_materials gives a three-layer material its base noise, its st
 {
     const auto scene = parse(three_layer_scene());
     REQUIRE_MESSAGE(scene, (scene ? "" : scene.error().message));
-    const std::vector<SurfaceMaterial> materials = prepared_materials(*scene, 2);
+    const std::vector<Material> materials = prepared_materials(*scene, 2);
     REQUIRE(materials.size() == 1);
-    const SurfaceMaterial& m = materials[0];
-    REQUIRE(m.microsurface.has_value());
-    CHECK(m.height_map);
-    CHECK(m.map.vmin == -0.03);
-    CHECK(m.map.vmax == 0.03);
-    REQUIRE(m.slope_map.has_value());
-    REQUIRE(std::holds_alternative<SteepnessColorMap>(*m.slope_map));
-    const ColorMap& by_angle = std::get<SteepnessColorMap>(*m.slope_map).by_angle;
+    REQUIRE(std::holds_alternative<MicrosurfaceDriver>(materials[0].driver));
+    const MicrosurfaceDriver& m = std::get<MicrosurfaceDriver>(materials[0].driver);
+    CHECK(m.colors.height.has_value());
+    REQUIRE(m.colors.height);
+    CHECK(m.colors.height->map.vmin == -0.03);
+    CHECK(m.colors.height->map.vmax == 0.03);
+    REQUIRE(m.colors.slope.has_value());
+    REQUIRE(std::holds_alternative<SteepnessColorMap>(*m.colors.slope));
+    const ColorMap& by_angle = std::get<SteepnessColorMap>(*m.colors.slope).by_angle;
     CHECK(by_angle.vmin == 0);
     CHECK(by_angle.vmax == 90);
-    CHECK(m.slope_map_path == kLuts + "grass-rock.png");
+    CHECK(materials[0].provenance.slope_map_path == kLuts + "grass-rock.png");
     REQUIRE(m.base != nullptr);
-    CHECK(m.base->noise.has_value());
-    CHECK_FALSE(m.base->texture.has_value());
-    CHECK_FALSE(m.base->microsurface.has_value());
-    CHECK(m.base->map.vmin == -0.7);
-    CHECK(m.base->map.vmax == 0.7);
-    CHECK(m.combine.mode == CombineMode::Sum);
-    CHECK(m.combine.base == 0.25);
-    CHECK(m.combine.height == 0.5);
-    CHECK(m.combine.slope == 1.5);
+    CHECK(std::holds_alternative<NoiseDriver>(m.base->driver));
+    CHECK_FALSE(std::holds_alternative<TextureDriver>(m.base->driver));
+    CHECK_FALSE(std::holds_alternative<MicrosurfaceDriver>(m.base->driver));
+    CHECK(m.base->color.map.vmin == -0.7);
+    CHECK(m.base->color.map.vmax == 0.7);
+    CHECK(m.colors.combine.mode == CombineMode::Sum);
+    CHECK(m.colors.combine.base == 0.25);
+    CHECK(m.colors.combine.height == 0.5);
+    CHECK(m.colors.combine.slope == 1.5);
 }
 
 TEST_CASE("prepare_materials gives a vector slope map its max_slope, and no height map without a colormap")
@@ -412,14 +413,15 @@ TEST_CASE("prepare_materials gives a vector slope map its max_slope, and no heig
         json::parse(R"({"image": "../../luts/slope-wheel.png", "by": "vector", "max_slope": 1.25})");
     const auto scene = parse(text);
     REQUIRE_MESSAGE(scene, (scene ? "" : scene.error().message));
-    const std::vector<SurfaceMaterial> materials = prepared_materials(*scene, 1);
+    const std::vector<Material> materials = prepared_materials(*scene, 1);
     REQUIRE(materials.size() == 1);
-    const SurfaceMaterial& m = materials[0];
-    CHECK_FALSE(m.height_map);
+    REQUIRE(std::holds_alternative<MicrosurfaceDriver>(materials[0].driver));
+    const MicrosurfaceDriver& m = std::get<MicrosurfaceDriver>(materials[0].driver);
+    CHECK_FALSE(m.colors.height.has_value());
     CHECK(m.base == nullptr);
-    REQUIRE(m.slope_map.has_value());
-    REQUIRE(std::holds_alternative<SlopeVectorColorMap>(*m.slope_map));
-    const SlopeVectorColorMap& v = std::get<SlopeVectorColorMap>(*m.slope_map);
+    REQUIRE(m.colors.slope.has_value());
+    REQUIRE(std::holds_alternative<SlopeVectorColorMap>(*m.colors.slope));
+    const SlopeVectorColorMap& v = std::get<SlopeVectorColorMap>(*m.colors.slope);
     CHECK(v.s_max == 1.25);
     CHECK(v.width > 0);
     CHECK(v.height > 0);

@@ -10,6 +10,7 @@
 #include "cmfilter/color/ciede2000.h"
 #include "cmfilter/noise/noise_sigma_table_file.h"
 #include "cmfilter/scene/scene_loading.h"
+#include "cmfilter/scene/scene_materials.h"
 
 #include "unit_test_support.h"
 
@@ -30,7 +31,8 @@ namespace {
 
 const std::string kScene = std::string(CMFILTER_SOURCE_DIR) + "/examples/scenes/plane-fbm-terrain.json";
 
-std::vector<SurfaceMaterial> materials_for(const Scene& scene, const TableChoiceOptions& tables)
+// Each surface's table layer (material.h), as prepare_materials leaves it.
+std::vector<ColorLayer> table_layers_for(const Scene& scene, const TableChoiceOptions& tables)
 {
     auto config = ColorConfig::load("");
     REQUIRE(config);
@@ -39,13 +41,15 @@ std::vector<SurfaceMaterial> materials_for(const Scene& scene, const TableChoice
     options.threads = 2;
     auto materials = prepare_materials(scene, *config, options);
     REQUIRE(materials);
-    return std::move(*materials);
+    std::vector<ColorLayer> layers;
+    for (Material& m : *materials) layers.push_back(std::move(table_layer(m)));
+    return layers;
 }
 
 // The q-quantile (nearest rank) of CIEDE2000 between the table's lookups and
 // the reference quadrature at n fresh points, v uniform over the domain and
 // sigma = sigma_max u^2, u uniform.
-double independent_error(const SurfaceMaterial& m, double q, int n)
+double independent_error(const ColorLayer& m, double q, int n)
 {
     cmfilter_test::ReferenceMap ref;
     ref.vmin = m.map.vmin;
@@ -73,9 +77,9 @@ TEST_CASE("a surface's fitted table covers its driver's sigma range and meets th
     REQUIRE(scene);
     TableChoiceOptions tables;
     tables.tolerance = 1.0;
-    const std::vector<SurfaceMaterial> materials = materials_for(*scene, tables);
+    const std::vector<ColorLayer> materials = table_layers_for(*scene, tables);
     REQUIRE(materials.size() == 1);
-    const SurfaceMaterial& m = materials[0];
+    const ColorLayer& m = materials[0];
 
     auto sigma_table = read_noise_sigma_table(scene->surfaces[0].material.driver.sigma_table_path, FootprintShape::Box);
     REQUIRE(sigma_table);
@@ -101,7 +105,7 @@ TEST_CASE("the scene's colormap tolerance fits as the option does; the option 0 
     auto scene = load_scene(kScene);
     REQUIRE(scene);
     // Without a tolerance: the fixed default, no shortcut.
-    const std::vector<SurfaceMaterial> fixed = materials_for(*scene, {});
+    const std::vector<ColorLayer> fixed = table_layers_for(*scene, {});
     const GaussianColorTableOptions defaults;
     CHECK(fixed[0].table.axes().values == defaults.values);
     CHECK(fixed[0].table.axes().sigmas == defaults.sigmas);
@@ -109,11 +113,11 @@ TEST_CASE("the scene's colormap tolerance fits as the option does; the option 0 
     CHECK(fixed[0].plain.empty());
 
     scene->surfaces[0].material.colormap.tolerance = 1.0;
-    const std::vector<SurfaceMaterial> from_scene = materials_for(*scene, {});
+    const std::vector<ColorLayer> from_scene = table_layers_for(*scene, {});
     TableChoiceOptions option;
     option.tolerance = 1.0;
     scene->surfaces[0].material.colormap.tolerance.reset();
-    const std::vector<SurfaceMaterial> from_option = materials_for(*scene, option);
+    const std::vector<ColorLayer> from_option = table_layers_for(*scene, option);
     CHECK(from_scene[0].fit.tolerance == 1.0);
     CHECK(from_scene[0].table.data() == from_option[0].table.data());
     CHECK(from_scene[0].plain.cells() == from_option[0].plain.cells());
@@ -121,7 +125,7 @@ TEST_CASE("the scene's colormap tolerance fits as the option does; the option 0 
     scene->surfaces[0].material.colormap.tolerance = 1.0;
     option.tolerance = 0.0;  // overrides the scene's: the fixed table
     option.plain_bound = 0.2;  // with the shortcut asked for explicitly
-    const std::vector<SurfaceMaterial> overridden = materials_for(*scene, option);
+    const std::vector<ColorLayer> overridden = table_layers_for(*scene, option);
     CHECK(overridden[0].table.axes().values == defaults.values);
     CHECK(overridden[0].fit.tolerance == 0.0);
     CHECK(overridden[0].fit.plain_bound == 0.2);
@@ -132,7 +136,7 @@ TEST_CASE("bad tolerance and shortcut values are refused, naming the option")
 {
     auto scene = load_scene(kScene);
     REQUIRE(scene);
-    std::vector<SurfaceMaterial> materials = materials_for(*scene, {});
+    std::vector<ColorLayer> materials = table_layers_for(*scene, {});
     TableChoiceOptions options;
     options.tolerance = -1.0;
     auto st = choose_surface_table(*scene, 0, materials[0], options);

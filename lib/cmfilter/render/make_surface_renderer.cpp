@@ -1,0 +1,47 @@
+#include "cmfilter/render/make_surface_renderer.h"
+
+#include "cmfilter/render/displacement_surface.h"
+#include "cmfilter/render/microsurface_surface.h"
+#include "cmfilter/render/noise_surface.h"
+#include "cmfilter/render/texture_surface.h"
+
+#include <type_traits>
+#include <variant>
+
+namespace cmfilter {
+
+namespace {
+
+template <typename Made, typename Renderer>
+Expected<std::unique_ptr<Renderer>> as_renderer(Expected<std::unique_ptr<Made>> made)
+{
+    if (!made) return made.error();
+    return std::unique_ptr<Renderer>(std::move(*made));
+}
+
+}  // namespace
+
+Expected<std::unique_ptr<SurfaceRenderer>> make_surface_renderer(const Material& material, std::size_t surface,
+                                                                 const RenderOptions& options)
+{
+    using Made = Expected<std::unique_ptr<SurfaceRenderer>>;
+    return std::visit(
+        [&](const auto& driver) -> Made {
+            using Driver = std::decay_t<decltype(driver)>;
+            if constexpr (std::is_same_v<Driver, NoiseDriver>)
+                return as_renderer<DriverRenderer, SurfaceRenderer>(
+                    make_noise_renderer(material.color, driver, surface, options.method));
+            else if constexpr (std::is_same_v<Driver, TextureDriver>)
+                return as_renderer<DriverRenderer, SurfaceRenderer>(
+                    make_texture_renderer(material, driver, surface, options.method, options));
+            else if constexpr (std::is_same_v<Driver, MicrosurfaceDriver>)
+                return make_microsurface_renderer(driver, surface, options);
+            else {
+                static_assert(std::is_same_v<Driver, DisplacementDriver>, "a driver kind without its renderer");
+                return make_displacement_renderer(driver, surface, options);
+            }
+        },
+        material.driver);
+}
+
+}  // namespace cmfilter

@@ -1,0 +1,81 @@
+#include "cmfilter/render/noise_surface.h"
+
+#include "cmfilter/texture/anisotropic_probes.h"
+#include "cmfilter/texture/footprint_width.h"
+#include "cmfilter/texture/histogram_pyramid.h"
+
+#include <string>
+
+namespace cmfilter {
+
+namespace {
+
+class NoiseRenderer : public DriverRenderer {
+public:
+    NoiseRenderer(const ColorLayer& color, const FilteredNoise& noise, RenderMethod method)
+        : color_(color), noise_(noise), method_(method)
+    {
+    }
+
+    FilteredHit filter(const SurfaceHit& h, const RenderContext& context, HitScratch& scratch) const override
+    {
+        const RenderOptions& options = context.options;
+        const bool colour = !context.supersampled;
+        FilteredHit out;
+        if (options.max_probes > 1) {
+            // Over an anisotropic footprint: probes along its major edge
+            // (anisotropic_probes.h), colours averaged.
+            const FootprintProbes probes =
+                footprint_probes(h.du_dx, h.dv_dx, h.du_dy, h.dv_dy, options.max_probes, options.footprint);
+            for (int j = 0; j < probes.count; ++j) {
+                const double o = (j + 0.5) / probes.count - 0.5;
+                const FilteredNoise::Parameters f =
+                    noise_.filter(h.u + o * probes.step_u, h.v + o * probes.step_v, probes.width);
+                if (colour) out.albedo += albedo(f.mean, f.sigma, scratch.counts);
+                out.mean += f.mean;
+                out.sigma += f.sigma;
+            }
+            out.albedo = (1.0 / probes.count) * out.albedo;
+            out.mean /= probes.count;
+            out.sigma /= probes.count;
+            out.lod = noise_.lod(probes.width);
+            return out;
+        }
+        // One footprint, as one width (footprint_width.h): the noise's mean
+        // and sigma (sec. 4.2) and the footprint's LOD.
+        const double w = footprint_width(options.footprint, h.du_dx, h.dv_dx, h.du_dy, h.dv_dy);
+        const FilteredNoise::Parameters f = noise_.filter(h.u, h.v, w);
+        out.mean = f.mean;
+        out.sigma = f.sigma;
+        out.lod = noise_.lod(w);
+        if (colour) out.albedo = albedo(f.mean, f.sigma, scratch.counts);
+        return out;
+    }
+
+    Rgb point_albedo(double u, double v) const override { return color_.map.evaluate(noise_.noise()(u, v)); }
+
+private:
+    Rgb albedo(double mean, double sigma, AlbedoCounts& counts) const
+    {
+        return method_ == RenderMethod::Naive ? color_.map.evaluate(mean)
+                                              : gaussian_albedo(color_, mean, sigma, counts);
+    }
+
+    const ColorLayer& color_;
+    const FilteredNoise& noise_;
+    RenderMethod method_;
+};
+
+}  // namespace
+
+Expected<std::unique_ptr<DriverRenderer>> make_noise_renderer(const ColorLayer& color, const NoiseDriver& driver,
+                                                              std::size_t surface, RenderMethod colour_method)
+{
+    if (colour_method == RenderMethod::Exact)
+        return bad_input("render: surface " + std::to_string(surface) + ": exact needs a texture driver with at most " +
+                         std::to_string(kHistogramMaxValues) +
+                         " distinct values; noise drivers have no exact filtering distribution");
+    return std::unique_ptr<DriverRenderer>(std::make_unique<NoiseRenderer>(color, driver.noise, colour_method));
+}
+
+}  // namespace cmfilter

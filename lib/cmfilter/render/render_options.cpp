@@ -1,0 +1,27 @@
+#include "cmfilter/render/render_options.h"
+
+namespace cmfilter {
+
+const char* to_string(RenderMethod method)
+{
+    switch (method) {
+    case RenderMethod::Naive: return "naive";
+    case RenderMethod::Gaussian: return "gaussian";
+    case RenderMethod::GaussianExact: return "gaussian-exact";
+    case RenderMethod::Exact: return "exact";
+    case RenderMethod::Supersample: return "supersample";
+    case RenderMethod::Reference: return "reference";
+    }
+    return "gaussian";
+}
+
+Expected<RenderMethod> parse_render_method(const std::string& text)
+{
+    for (RenderMethod m : {RenderMethod::Naive, RenderMethod::Gaussian, RenderMethod::GaussianExact, RenderMethod::Exact,
+                           RenderMethod::Supersample, RenderMethod::Reference})
+        if (text == to_string(m)) return m;
+    return bad_input("method '" + text +
+                     "' is unknown (expected naive, gaussian, gaussian-exact, exact, supersample or reference)");
+}
+
+}  // namespace cmfilter

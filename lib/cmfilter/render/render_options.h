@@ -1,0 +1,54 @@
+// The methods and options of `render` (render.h).
+#pragma once
+
+#include "cmfilter/microsurface/light_weighted_slope_map.h"
+#include "cmfilter/microsurface/smith_lambda.h"
+#include "cmfilter/texture/footprint_width.h"
+#include "cmfilter/util/error.h"
+
+#include <cstdint>
+#include <functional>
+#include <string>
+
+namespace cmfilter {
+
+enum class RenderMethod { Naive, Gaussian, GaussianExact, Exact, Supersample, Reference };
+const char* to_string(RenderMethod method);
+Expected<RenderMethod> parse_render_method(const std::string& text);
+
+inline constexpr int kReferenceSamples = 1024;
+inline constexpr int kMaxSamples = 1 << 16;
+
+struct RenderOptions {
+    RenderMethod method = RenderMethod::Gaussian;
+    int samples = 16;  // supersample: N >= 1; reference: max(N, 1024)
+    std::uint64_t seed = 0;
+    int threads = 0;   // 0: all cores
+    FootprintWidth footprint = FootprintWidth::Rms;
+    // Naive, gaussian and exact: filter an anisotropic footprint as up to
+    // this many probes along its major edge (anisotropic_probes.h; textures:
+    // texture_footprint.h); 1: one footprint. 16 by default: on the bundled
+    // ground planes the error stops falling there (docs/render.md).
+    int max_probes = 16;
+    // naive, gaussian, exact: where a silhouette, a horizon or a meeting of
+    // two surfaces crosses the pixel, mix each surface seen (filtered over
+    // its own part) and the background by their shares of the box pixel
+    // (pixel_coverage.h), as the supersampled methods do; false: the centre
+    // ray's surface (or the background) for the whole pixel.
+    bool edge_coverage = true;
+    // Microsurfaces: how masking and shadowing combine (smith_lambda.h):
+    // correlated by azimuth (the default: gaussian-exact within 0.5 mean
+    // CIEDE2000 of the ray-traced reference up to 80 degrees in every set-up
+    // of docs/microsurface.md, where with eq. 13 it is 2.2 from it with the
+    // light from the viewer), or independent as in the paper's eq. 13.
+    MaskingShadowing masking = MaskingShadowing::DirectionCorrelated;
+    // Microsurfaces coloured by slope: weighted by each facet's cosine to the
+    // light (the default, light_weighted_slope_map.h: from up to 25 mean
+    // CIEDE2000 to under 2 on a slope-vector map lit from the side,
+    // docs/slope.md), or eq. 19's colour (the facets' shading uncorrelated
+    // with it).
+    SlopeShading slope_shading = SlopeShading::Correlated;
+    std::function<void(double)> progress;  // fraction of rows done, may be empty
+};
+
+}  // namespace cmfilter

@@ -1,0 +1,79 @@
+#include "cmfilter/render/texture_surface.h"
+
+#include "cmfilter/render/texture_footprint.h"
+
+#include <string>
+#include <utility>
+
+namespace cmfilter {
+
+namespace {
+
+// What a texture driver's probes colour for a method (texture_footprint.h).
+TextureColor texture_color(RenderMethod method)
+{
+    switch (method) {
+    case RenderMethod::Naive: return TextureColor::Naive;
+    case RenderMethod::Gaussian:
+    case RenderMethod::GaussianExact: return TextureColor::Gaussian;
+    case RenderMethod::Exact: return TextureColor::Exact;
+    default: return TextureColor::None;
+    }
+}
+
+class TextureRenderer : public DriverRenderer {
+public:
+    TextureRenderer(const ColorLayer& color, const TextureDriver& driver, RenderMethod method,
+                    std::vector<Rgb> bin_colors)
+        : color_(color), driver_(driver), method_(method), bin_colors_(std::move(bin_colors))
+    {
+    }
+
+    FilteredHit filter(const SurfaceHit& h, const RenderContext& context, HitScratch& scratch) const override
+    {
+        // Its pyramids looked up by probes along the footprint's major edge
+        // (texture_footprint.h); supersampled pixels take only the AOVs.
+        const TextureFootprint f = filter_texture_footprint(
+            color_, driver_.texture, driver_.histograms ? &*driver_.histograms : nullptr, h,
+            context.supersampled ? TextureColor::None : texture_color(method_), context.options.footprint,
+            context.options.max_probes, bin_colors_, scratch.weights);
+        scratch.counts.footprints += f.counts.footprints;
+        scratch.counts.plain += f.counts.plain;
+        return {f.albedo, f.mean, f.sigma, f.lod};
+    }
+
+    Rgb point_albedo(double u, double v) const override { return color_.map.evaluate(driver_.texture.value(u, v)); }
+
+private:
+    const ColorLayer& color_;
+    const TextureDriver& driver_;
+    RenderMethod method_;
+    std::vector<Rgb> bin_colors_;  // exact: C0 at the histogram's distinct values
+};
+
+}  // namespace
+
+Expected<std::unique_ptr<DriverRenderer>> make_texture_renderer(const Material& material, const TextureDriver& driver,
+                                                                std::size_t surface, RenderMethod colour_method,
+                                                                const RenderOptions& options)
+{
+    // The supersampled methods read f at each ray's hit from level 0, which
+    // a moments driver whose recorded driver is gone lacks.
+    if ((options.method == RenderMethod::Supersample || options.method == RenderMethod::Reference) &&
+        !driver.texture.has_level0())
+        return io_error(material.provenance.missing_driver + "; " + to_string(options.method) +
+                        " reads the driver's texels at each ray's hit (naive and gaussian need only the "
+                        "moments): re-bake the moments from the driver where it is now, or name the "
+                        "driver itself with driver/image");
+    std::vector<Rgb> bin_colors;
+    if (colour_method == RenderMethod::Exact) {
+        if (!driver.histograms)
+            return bad_input("render: surface " + std::to_string(surface) +
+                             ": exact needs the texture's histogram pyramid (MaterialOptions::histograms)");
+        for (double v : driver.histograms->info().values) bin_colors.push_back(material.color.map.evaluate(v));
+    }
+    return std::unique_ptr<DriverRenderer>(
+        std::make_unique<TextureRenderer>(material.color, driver, colour_method, std::move(bin_colors)));
+}
+
+}  // namespace cmfilter
