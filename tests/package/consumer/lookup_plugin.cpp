@@ -3,7 +3,7 @@
 #include "cmfilter/tables/gaussian_color_table_file.h"
 
 extern "C" __attribute__((visibility("default"))) int cmfilter_plugin_lookup(const char* table_path, double mean,
-                                                                            double sigma, float rgb[3])
+                                                                             double sigma, float rgb[3])
 {
     auto loaded = cmfilter::read_gaussian_color_table(table_path);
     if (!loaded) return 1;
