@@ -300,15 +300,22 @@ Status check_level0(const std::vector<SurfaceMaterial>& materials, RenderMethod 
 
 }  // namespace
 
+Status check_render_samples(int samples)
+{
+    if (samples < 1 || samples > kMaxSamples)
+        return bad_input("--spp " + std::to_string(samples) + " is out of range (expected 1 to " +
+                             std::to_string(kMaxSamples) + ")",
+                         "RenderOptions::samples");
+    return ok();
+}
+
 Expected<RenderedImage> render(const Scene& scene, const std::vector<SurfaceMaterial>& materials,
                                const RenderOptions& options)
 {
     if (materials.size() != scene.surfaces.size())
         return bad_input("render: " + std::to_string(materials.size()) + " materials for " +
                          std::to_string(scene.surfaces.size()) + " surfaces");
-    if (options.samples < 1 || options.samples > kMaxSamples)
-        return bad_input("--spp " + std::to_string(options.samples) + " is out of range (expected 1 to " +
-                         std::to_string(kMaxSamples) + ")");
+    if (auto st = check_render_samples(options.samples); !st) return st.error();
     for (const SurfaceMaterial& m : materials)
         if (!m.noise && !m.texture && !m.layered())
             return bad_input("render: every surface needs a driver (a noise or a texture) or a microsurface");

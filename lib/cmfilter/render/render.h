@@ -125,6 +125,10 @@ struct RenderedImage {
     double seconds = 0;        // wall time of the pixel loop
 };
 
+// BadInput (field RenderOptions::samples) for a sample count outside
+// 1 .. kMaxSamples: the one check of a count of rays per pixel.
+Status check_render_samples(int samples);
+
 // BadInput for a sample count outside 1 .. kMaxSamples, a material count
 // that does not match the scene, a material without a driver, or, for the
 // exact method, a noise driver or a texture without its histogram pyramid;

@@ -21,9 +21,15 @@
 #include "cmfilter/tables/table_fit.h"
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace cmfilter {
+
+// BadInput (field TableChoiceOptions::plain_bound, named --shortcut) unless
+// the small-sigma shortcut's bound is unset or finite and >= 0: the one check
+// of it.
+Status check_plain_bound(const std::optional<double>& plain_bound);
 
 // Fits surface `surface`'s table (material.table, material.fit) and sets its
 // shortcut (material.plain). BadInput for an out-of-range tolerance or bound (named as
