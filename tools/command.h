@@ -2,7 +2,10 @@
 // subcommand's options on the CLI11 app and returns the action to run once
 // parsing succeeded. Actions call the library and report; they return a
 // Status whose error main() prints once, as "cmfilter <cmd>: error: ...",
-// and maps to the exit code of its kind (docs/exit-codes.md).
+// and maps to the exit code of its kind (docs/exit-codes.md). The library
+// names an option by its options struct's field ("ApplyOptions::lod"); each
+// command lists the flags it gives those fields, and main() writes the flag
+// where the message names the field.
 #pragma once
 
 #include "cmfilter/color/color_config.h"
@@ -12,12 +15,30 @@
 
 #include <functional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace cmfilter::cli {
+
+// Qualified options fields ("ApplyOptions::lod") and how the command line
+// names each: its flag ("--driver"; a message that asks for a value names its
+// placeholder after the field: "pass ApplyOptions::driver_path PATH").
+using FieldFlags = std::vector<std::pair<std::string, std::string>>;
+
+// `text` (a library error or warning) with every field of `flags` it names
+// written as its flag. A field is replaced only as a whole name (not followed
+// by a letter, a digit or '_'), the longest first.
+std::string name_flags(const std::string& text, const FieldFlags& flags);
+
+// The fields of colour-map loading (ColorMapLoadOptions, TableColorMapOptions)
+// as bake-colormap and apply name them; every command that loads a colour map
+// (from an image, a table or a scene) names them so.
+FieldFlags color_map_flags();
 
 struct Command {
     CLI::App* app = nullptr;
     std::function<Status()> run;
+    FieldFlags flags;  // the fields its errors may name
 };
 
 Command setup_apply(CLI::App& parent);
@@ -35,6 +56,9 @@ Expected<std::pair<double, double>> parse_range(const std::string& option, const
 
 // Splits "WxH" into two integers in 1..65536; names the option and the text on failure.
 Expected<std::pair<int, int>> parse_size(const std::string& option, const std::string& text);
+
+// --probes (render, bench): BadInput unless 1 <= probes <= 64.
+Status check_probes(int probes);
 
 // A progress callback printing "\r<command>: N%" on stderr when the percent
 // changes (a newline at 100%); callers use it only when stderr is a terminal.

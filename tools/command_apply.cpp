@@ -22,6 +22,17 @@ namespace cmfilter::cli {
 
 namespace {
 
+// The fields apply_filter's errors and warnings name, as apply's flags.
+FieldFlags apply_flags()
+{
+    FieldFlags flags = color_map_flags();
+    flags.insert(flags.end(), {{"ApplyOptions::lod", "--lod"},
+                               {"ApplyOptions::method", "--method"},
+                               {"ApplyOptions::histograms_path", "--histograms H.exr"},
+                               {"ApplyOptions::driver_path", "--driver"}});
+    return flags;
+}
+
 struct ApplyArgs {
     ApplyOptions options;  // paths, lod and threads bind straight to its fields
     std::string output;
@@ -64,7 +75,10 @@ Status run(ApplyArgs args)
     if (auto st = write_filtered_image(args.output, *image, *config); !st) return st;
     const double total_ms =
         t0.elapsed_ms();
-    for (const std::string& w : image->warnings) std::cerr << "cmfilter apply: warning: " << w << "\n";
+    for (std::string& w : image->warnings) {
+        w = name_flags(w, apply_flags());
+        std::cerr << "cmfilter apply: warning: " << w << "\n";
+    }
 
     const FilteredImage& r = *image;
     if (args.json) {
@@ -145,7 +159,7 @@ Command setup_apply(CLI::App& parent)
     app->add_option("--threads", args->options.threads, "Threads (0: all cores)")->capture_default_str();
     app->add_flag("--json", args->json, "Print a machine-readable summary on stdout");
     app->add_flag("-q,--quiet", args->quiet, "Print nothing on success but warnings (and no progress)");
-    return {app, [args] { return run(*args); }};
+    return {app, [args] { return run(*args); }, apply_flags()};
 }
 
 }  // namespace cmfilter::cli

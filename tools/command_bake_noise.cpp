@@ -128,7 +128,7 @@ Command setup_bake_noise(CLI::App& parent)
     app->add_option("--threads", args->threads, "Threads (0: all cores)")->capture_default_str();
     app->add_flag("--json", args->json, "Print a machine-readable summary on stdout");
     app->add_flag("-q,--quiet", args->quiet, "Print nothing on success (and no progress)");
-    return {app, [args] { return run(*args); }};
+    return {app, [args] { return run(*args); }, {}};
 }
 
 }  // namespace cmfilter::cli

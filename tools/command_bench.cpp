@@ -4,9 +4,9 @@
 // overall and per distance band; a CSV, and a log-log chart per scene.
 #include "command.h"
 
+#include "bench/bench_chart.h"
+#include "bench/render_benchmark.h"
 #include "cmfilter/util/atomic_output.h"
-#include "cmfilter/render/bench_chart.h"
-#include "cmfilter/render/render_benchmark.h"
 #include "cmfilter/scene/scene_loading.h"
 
 #include <cmath>
@@ -18,6 +18,8 @@
 namespace cmfilter::cli {
 
 namespace {
+
+using namespace cmfilter::bench;
 
 struct BenchArgs {
     std::vector<std::string> scenes;
@@ -54,16 +56,11 @@ Status run(const BenchArgs& args)
     if (auto st = check_output_path(args.csv, ".csv"); !st) return st;
     if (!args.charts.empty() && !std::filesystem::is_directory(args.charts))
         return io_error("--charts '" + args.charts + "' is not a folder");
-    if (args.reference_samples < kReferenceSamples || args.reference_samples > kMaxSamples)
-        return bad_input("--reference-spp " + std::to_string(args.reference_samples) + " is out of range (expected " +
-                         std::to_string(kReferenceSamples) + " to " + std::to_string(kMaxSamples) + ")");
-    if (!(args.reference_repeat >= 0) || !std::isfinite(args.reference_repeat))
-        return bad_input("--reference-repeat " + std::to_string(args.reference_repeat) +
-                         " is out of range (expected a finite mean CIEDE2000 >= 0)");
-    if (args.max_reference_samples < args.reference_samples || args.max_reference_samples > kMaxSamples)
-        return bad_input("--max-reference-spp " + std::to_string(args.max_reference_samples) +
-                         " is out of range (expected --reference-spp " + std::to_string(args.reference_samples) +
-                         " to " + std::to_string(kMaxSamples) + ")");
+    BenchOptions options;
+    options.reference_samples = args.reference_samples;
+    options.reference_repeat = args.reference_repeat;
+    options.max_reference_samples = args.max_reference_samples;
+    if (auto st = check_reference_options(options); !st) return st;
     std::optional<std::pair<int, int>> size;
     if (!args.resolution.empty()) {
         auto parsed = parse_size("--resolution", args.resolution);
@@ -73,14 +70,9 @@ Status run(const BenchArgs& args)
     auto config = load_color_config(args.ocio_config);
     if (!config) return config.error();
 
-    BenchOptions options;
-    options.reference_samples = args.reference_samples;
-    options.reference_repeat = args.reference_repeat;
-    options.max_reference_samples = args.max_reference_samples;
     options.repeats = args.repeats;
     options.max_probes = args.probes;
-    if (args.probes < 1 || args.probes > 64)
-        return bad_input("--probes " + std::to_string(args.probes) + " is out of range (expected 1 to 64)");
+    if (auto st = check_probes(args.probes); !st) return st;
     if (!args.only.empty()) {
         auto chosen = select_bench_configurations(options.configurations, args.only);
         if (!chosen) return chosen.error();
@@ -154,7 +146,11 @@ Command setup_bench(CLI::App& parent)
                     "OpenColorIO config (default: $OCIO if set, else the built-in config)");
     app->add_option("--threads", args->threads, "Threads (0: all cores)")->capture_default_str();
     app->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
-    return {app, [args] { return run(*args); }};
+    FieldFlags flags = color_map_flags();
+    flags.insert(flags.end(), {{"BenchOptions::reference_samples", "--reference-spp"},
+                               {"BenchOptions::reference_repeat", "--reference-repeat"},
+                               {"BenchOptions::max_reference_samples", "--max-reference-spp"}});
+    return {app, [args] { return run(*args); }, flags};
 }
 
 }  // namespace cmfilter::cli

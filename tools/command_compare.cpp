@@ -111,7 +111,7 @@ Command setup_compare(CLI::App& parent)
     app->add_option("--threads", args->options.threads, "Threads (0: all cores)")->capture_default_str();
     app->add_flag("--json", args->json, "Print the results as JSON on stdout");
     app->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
-    return {app, [args] { return run(*args); }};
+    return {app, [args] { return run(*args); }, {{"ImageComparisonOptions::heatmap_max", "--heatmap-max"}}};
 }
 
 }  // namespace cmfilter::cli

@@ -52,7 +52,7 @@ Command setup_info(CLI::App& parent)
         "info", "Print what a cmfilter artefact is and every parameter it was baked with");
     app->add_option("FILE", args->path, "A file written by cmfilter")->required();
     app->add_flag("--json", args->json, "Print the same as JSON");
-    return {app, [args] { return run(*args); }};
+    return {app, [args] { return run(*args); }, {}};
 }
 
 }  // namespace cmfilter::cli

@@ -6,6 +6,7 @@
 #include "cmfilter/render/render.h"
 #include "cmfilter/io/rgb_image_file.h"
 #include "cmfilter/scene/scene_loading.h"
+#include "cmfilter/scene/tolerance_tables.h"
 #include "cmfilter/tables/table_size_search.h"
 #include "cmfilter/util/version.h"
 
@@ -102,19 +103,13 @@ Status run(const RenderArgs& args)
     if (!method) return method.error();
     auto footprint = parse_footprint_width(args.footprint);
     if (!footprint) return footprint.error();
-    if (args.samples < 1 || args.samples > kMaxSamples)
-        return bad_input("--spp " + std::to_string(args.samples) + " is out of range (expected 1 to " +
-                         std::to_string(kMaxSamples) + ")");
+    if (auto st = check_render_samples(args.samples); !st) return st;
     if (args.tolerance && !(std::isfinite(*args.tolerance) && *args.tolerance > 0)) {
         std::ostringstream msg;
         msg << "--tolerance " << *args.tolerance << " is invalid (expected a CIEDE2000 difference > 0)";
         return bad_input(msg.str());
     }
-    if (args.shortcut && !(std::isfinite(*args.shortcut) && *args.shortcut >= 0)) {
-        std::ostringstream msg;
-        msg << "--shortcut " << *args.shortcut << " is invalid (expected a CIEDE2000 difference >= 0; 0 turns it off)";
-        return bad_input(msg.str());
-    }
+    if (auto st = check_plain_bound(args.shortcut); !st) return st;
     if (args.masking != "uncorrelated" && args.masking != "correlated")
         return bad_input("--masking '" + args.masking + "' is unknown (expected uncorrelated or correlated)");
     if (args.slope_shading != "uncorrelated" && args.slope_shading != "correlated")
@@ -148,8 +143,7 @@ Status run(const RenderArgs& args)
     options.seed = args.seed;
     options.threads = args.threads;
     options.footprint = *footprint;
-    if (args.probes < 1 || args.probes > 64)
-        return bad_input("--probes " + std::to_string(args.probes) + " is out of range (expected 1 to 64)");
+    if (auto st = check_probes(args.probes); !st) return st;
     options.max_probes = args.probes;
     options.edge_coverage = !args.no_edge_coverage;
     options.masking =
@@ -270,7 +264,7 @@ Command setup_render(CLI::App& parent)
     app->add_option("--threads", args->threads, "Threads (0: all cores)")->capture_default_str();
     app->add_flag("--json", args->json, "Print a machine-readable summary on stdout");
     app->add_flag("-q,--quiet", args->quiet, "Print nothing on success (and no progress)");
-    return {app, [args] { return run(*args); }};
+    return {app, [args] { return run(*args); }, color_map_flags()};
 }
 
 }  // namespace cmfilter::cli

@@ -46,7 +46,7 @@ int main(int argc, char** argv)
         if (!command.app->parsed()) continue;
         Status status = command.run();
         if (!status) {
-            std::cerr << prefix() << ": error: " << status.error().message << "\n";
+            std::cerr << prefix() << ": error: " << cli::name_flags(status.error().message, command.flags) << "\n";
             return static_cast<int>(status.error().kind);
         }
         return 0;

@@ -55,12 +55,13 @@ Expected<LoadedColorMap> load_color_map(const ColorMapLoadOptions& options,
     if (!std::isfinite(options.vmin) || !std::isfinite(options.vmax) ||
         !(options.vmin < options.vmax)) {
         std::ostringstream msg;
-        msg << "--domain " << options.vmin << ":" << options.vmax
+        msg << "ColorMapLoadOptions::vmin:vmax " << options.vmin << ":" << options.vmax
             << " is invalid (expected finite vmin < vmax)";
-        return bad_input(msg.str());
+        return bad_input(msg.str(), "ColorMapLoadOptions::vmin");
     }
     if (options.row && options.column)
-        return bad_input("--row and --column were both given; pick one gradient");
+        return bad_input("ColorMapLoadOptions::row and ColorMapLoadOptions::column were both given; pick one gradient",
+                         "ColorMapLoadOptions::row");
 
     auto image = read_image(options.path);
     if (!image) return image.error();
@@ -73,9 +74,9 @@ Expected<LoadedColorMap> load_color_map(const ColorMapLoadOptions& options,
         const int c = options.column.value_or(0);
         if (c < 0 || c >= img.width) {
             std::ostringstream msg;
-            msg << "--column " << c << " is outside '" << options.path << "' (expected 0.."
+            msg << "ColorMapLoadOptions::column " << c << " is outside '" << options.path << "' (expected 0.."
                 << img.width - 1 << ")";
-            return bad_input(msg.str());
+            return bad_input(msg.str(), "ColorMapLoadOptions::column");
         }
         start_x = c, step_x = 0, step_y = 1, count = img.height;
         selection = "column " + std::to_string(c);
@@ -83,9 +84,9 @@ Expected<LoadedColorMap> load_color_map(const ColorMapLoadOptions& options,
         const int r = options.row.value_or(0);
         if (r < 0 || r >= img.height) {
             std::ostringstream msg;
-            msg << "--row " << r << " is outside '" << options.path << "' (expected 0.."
+            msg << "ColorMapLoadOptions::row " << r << " is outside '" << options.path << "' (expected 0.."
                 << img.height - 1 << ")";
-            return bad_input(msg.str());
+            return bad_input(msg.str(), "ColorMapLoadOptions::row");
         }
         start_y = r;
         selection = "row " + std::to_string(r);

@@ -60,14 +60,16 @@ Expected<DriverImage> read_source_driver(const ApplyOptions& options, const Mome
     std::error_code ec;
     if (!overridden && !std::filesystem::is_regular_file(path, ec))
         return io_error("cannot read driver '" + path + "' recorded in '" + options.moments_path +
-                        "' (cmfilter:source): no such file; pass --driver PATH to give its location");
+                        "' (cmfilter:source): no such file; pass ApplyOptions::driver_path PATH to give its location",
+                        "ApplyOptions::driver_path");
     auto driver = read_moment_source(path, options.moments_path, info, threads);
     if (!driver) return driver.error();
     if (!is_moment_source(*driver, info)) {
         const std::string what = moment_source_changed(path, *driver, options.moments_path, info);
         if (!overridden)
-            return bad_input(what + "; re-bake the moments, or pass --driver PATH to use it anyway");
-        warnings.push_back(what + "; using it as --driver asks");
+            return bad_input(what + "; re-bake the moments, or pass ApplyOptions::driver_path PATH to use it anyway",
+                             "ApplyOptions::driver_path");
+        warnings.push_back(what + "; using it as ApplyOptions::driver_path asks");
     }
     return std::move(driver->image);
 }
@@ -99,10 +101,12 @@ Expected<FilteredImage> apply_filter(const ApplyOptions& options, const ColorCon
         return bad_input("output size " + std::to_string(options.width) + "x" +
                          std::to_string(options.height) + " is invalid (expected W, H >= 1)");
     if (!std::isfinite(options.lod))
-        return bad_input("--lod " + format_number(options.lod) + " is invalid (expected a finite number)");
+        return bad_input("ApplyOptions::lod " + format_number(options.lod) + " is invalid (expected a finite number)",
+                         "ApplyOptions::lod");
     if (options.method == FilterMethod::Exact && options.histograms_path.empty())
-        return bad_input("--method exact needs --histograms H.exr (the driver's histogram pyramid, "
-                         "sec. 4.1)");
+        return bad_input("ApplyOptions::method exact needs ApplyOptions::histograms_path (the driver's histogram "
+                         "pyramid, sec. 4.1)",
+                         "ApplyOptions::histograms_path");
 
     FilteredImage out;
     out.method = options.method;
@@ -127,7 +131,7 @@ Expected<FilteredImage> apply_filter(const ApplyOptions& options, const ColorCon
                          format_number(info.driver_max) + "] of '" + options.moments_path +
                          "' does not overlap the domain " + domain + " of table '" +
                          options.table_path + "' (expected overlapping ranges; re-bake the table "
-                         "with a --domain that covers the driver)");
+                         "with a ColorMapLoadOptions::vmin:vmax that covers the driver)");
     if (info.driver_min < axes.vmin || info.driver_max > axes.vmax) {
         auto outside = count_outside(options.moments_path, info, axes.vmin, axes.vmax);
         if (!outside) return outside.error();
@@ -147,7 +151,7 @@ Expected<FilteredImage> apply_filter(const ApplyOptions& options, const ColorCon
     out.lod = lod;
     out.lod_clamped = static_cast<double>(lod) != options.lod;
     if (out.lod_clamped)
-        out.warnings.push_back("--lod " + format_number(options.lod) + " is outside [0, " +
+        out.warnings.push_back("ApplyOptions::lod " + format_number(options.lod) + " is outside [0, " +
                                std::to_string(out.top_level) + "] for '" + options.moments_path +
                                "' (" + std::to_string(info.width) + " x " + std::to_string(info.height) +
                                "); clamped to " + format_number(lod));

@@ -73,7 +73,8 @@ struct FilteredImage {
 };
 
 // Io when an input cannot be read (a missing colour map or driver recorded in
-// a file says to pass --map or --driver), BadInput when a file is not what it
+// a file says to set TableColorMapOptions::map_override or
+// ApplyOptions::driver_path), BadInput when a file is not what it
 // should be, when the table's domain and the driver's range do not overlap
 // (clamp maps), or when an option is out of range.
 Expected<FilteredImage> apply_filter(const ApplyOptions& options, const ColorConfig& config);

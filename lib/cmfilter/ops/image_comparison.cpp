@@ -105,8 +105,9 @@ Expected<ImageComparison> compare_images(const ImageComparisonOptions& options,
 {
     if (!std::isfinite(options.heatmap_max) || !(options.heatmap_max > 0.0)) {
         std::ostringstream msg;
-        msg << "--heatmap-max " << options.heatmap_max << " is invalid (expected a finite Delta E00 > 0)";
-        return bad_input(msg.str());
+        msg << "ImageComparisonOptions::heatmap_max " << options.heatmap_max
+            << " is invalid (expected a finite Delta E00 > 0)";
+        return bad_input(msg.str(), "ImageComparisonOptions::heatmap_max");
     }
     const bool heatmap = !options.heatmap_path.empty();
     // Before any work, so a bad destination fails fast.

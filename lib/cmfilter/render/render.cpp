@@ -179,9 +179,7 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<Material>& 
     if (materials.size() != scene.surfaces.size())
         return bad_input("render: " + std::to_string(materials.size()) + " materials for " +
                          std::to_string(scene.surfaces.size()) + " surfaces");
-    if (options.samples < 1 || options.samples > kMaxSamples)
-        return bad_input("--spp " + std::to_string(options.samples) + " is out of range (expected 1 to " +
-                         std::to_string(kMaxSamples) + ")");
+    if (auto st = check_render_samples(options.samples); !st) return st.error();
     // One renderer per surface, for its driver's kind (surface_renderer.h).
     std::vector<std::unique_ptr<SurfaceRenderer>> surfaces;
     for (std::size_t i = 0; i < materials.size(); ++i) {

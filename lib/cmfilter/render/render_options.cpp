@@ -24,4 +24,13 @@ Expected<RenderMethod> parse_render_method(const std::string& text)
                      "' is unknown (expected naive, gaussian, gaussian-exact, exact, supersample or reference)");
 }
 
+Status check_render_samples(int samples)
+{
+    if (samples < 1 || samples > kMaxSamples)
+        return bad_input("--spp " + std::to_string(samples) + " is out of range (expected 1 to " +
+                             std::to_string(kMaxSamples) + ")",
+                         "RenderOptions::samples");
+    return ok();
+}
+
 }  // namespace cmfilter

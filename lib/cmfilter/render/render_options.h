@@ -51,4 +51,8 @@ struct RenderOptions {
     std::function<void(double)> progress;  // fraction of rows done, may be empty
 };
 
+// BadInput (field RenderOptions::samples) for a sample count outside
+// 1 .. kMaxSamples: the one check of a count of rays per pixel.
+Status check_render_samples(int samples);
+
 }  // namespace cmfilter

@@ -13,28 +13,34 @@ namespace {
 
 Error located(const Scene& scene, std::size_t surface, const Error& e)
 {
-    return {e.kind, scene.path + ": /surfaces/" + std::to_string(surface) + "/material/colormap: " + e.message};
+    return prefixed(scene.path + ": /surfaces/" + std::to_string(surface) + "/material/colormap: ", e);
 }
 
-Status check_optional(const std::optional<double>& value, const char* name, const char* expected)
+Status check_optional(const std::optional<double>& value, const char* name, const char* field,
+                      const char* expected)
 {
     if (value && !(std::isfinite(*value) && *value >= 0)) {
         std::ostringstream msg;
         msg << name << " " << *value << " is invalid (expected " << expected << ")";
-        return bad_input(msg.str());
+        return bad_input(msg.str(), field);
     }
     return ok();
 }
 
 }  // namespace
 
+Status check_plain_bound(const std::optional<double>& plain_bound)
+{
+    return check_optional(plain_bound, "--shortcut", "TableChoiceOptions::plain_bound",
+                          "a CIEDE2000 difference >= 0; 0 turns it off");
+}
+
 Status choose_surface_table(const Scene& scene, std::size_t surface, ColorLayer& layer,
                             const TableChoiceOptions& options)
 {
-    if (auto st = check_optional(options.tolerance, "--tolerance", "a CIEDE2000 difference > 0"); !st) return st;
-    if (auto st = check_optional(options.plain_bound, "--shortcut", "a CIEDE2000 difference >= 0; 0 turns it off");
-        !st)
-        return st;
+    if (auto st = check_optional(options.tolerance, "--tolerance", "TableChoiceOptions::tolerance",
+                                 "a CIEDE2000 difference > 0"); !st) return st;
+    if (auto st = check_plain_bound(options.plain_bound); !st) return st;
     if (surface >= scene.surfaces.size())
         return bad_input(scene.path + ": surface " + std::to_string(surface) + " does not exist");
     const std::optional<double> tolerance =

@@ -21,9 +21,15 @@
 #include "cmfilter/util/error.h"
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace cmfilter {
+
+// BadInput (field TableChoiceOptions::plain_bound, named --shortcut) unless
+// the small-sigma shortcut's bound is unset or finite and >= 0: the one check
+// of it.
+Status check_plain_bound(const std::optional<double>& plain_bound);
 
 // Fits surface `surface`'s table (layer.table, layer.fit) over its map
 // (layer.map) and sets its shortcut (layer.plain). BadInput for an

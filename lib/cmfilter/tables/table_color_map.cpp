@@ -15,12 +15,16 @@ Expected<TableColorMap> load_table_color_map(const LoadedGaussianColorTable& tab
     const std::string path = overridden ? options.map_override : src.path;
     const std::string where = "'" + options.table_path + "'";
     if (path.empty())
-        return bad_input(where + " records no colour map source (cmfilter:source); pass --map PATH");
+        return bad_input(where + " records no colour map source (cmfilter:source); pass "
+                                 "TableColorMapOptions::map_override PATH",
+                         "TableColorMapOptions::map_override");
     if (!overridden) {
         std::error_code ec;
         if (!std::filesystem::is_regular_file(path, ec))
             return io_error("cannot read colour map '" + path + "' recorded in " + where +
-                            " (cmfilter:source): no such file; pass --map PATH to give its location");
+                                " (cmfilter:source): no such file; pass TableColorMapOptions::map_override PATH to give "
+                                "its location",
+                            "TableColorMapOptions::map_override");
     }
 
     ColorMapLoadOptions load;
@@ -49,8 +53,9 @@ Expected<TableColorMap> load_table_color_map(const LoadedGaussianColorTable& tab
                                  ") is not the file " + where + " was baked from (sha256 " +
                                  src.sha256 + ")";
         if (!overridden)
-            return bad_input(what + "; re-bake the table, or pass --map PATH to use it anyway");
-        out.warnings.push_back(what + "; using it as --map asks");
+            return bad_input(what + "; re-bake the table, or pass TableColorMapOptions::map_override PATH to use it anyway",
+                             "TableColorMapOptions::map_override");
+        out.warnings.push_back(what + "; using it as TableColorMapOptions::map_override asks");
     }
     if (!src.linear_space.empty() && src.linear_space != config.scene_linear_name())
         out.warnings.push_back(where + " was baked in scene-linear '" + src.linear_space +

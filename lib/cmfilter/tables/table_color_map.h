@@ -28,7 +28,7 @@ struct TableColorMap {
     std::vector<std::string> warnings;  // e.g. a hash mismatch with an override
 };
 
-// Io (saying to pass --map) when the recorded source cannot be read and no
+// Io (saying to set map_override) when the recorded source cannot be read and no
 // override was given; BadInput when its hash differs from the recorded one
 // (only a warning with an override), or the metadata names no usable map.
 Expected<TableColorMap> load_table_color_map(const LoadedGaussianColorTable& table,

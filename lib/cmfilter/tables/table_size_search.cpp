@@ -39,12 +39,12 @@ Status check_options(const TableSizeSearchOptions& o)
     if (!std::isfinite(o.tolerance) || o.tolerance <= 0) {
         std::ostringstream msg;
         msg << "--tolerance " << o.tolerance << " is invalid (expected a CIEDE2000 difference > 0)";
-        return bad_input(msg.str());
+        return bad_input(msg.str(), "TableSizeSearchOptions::tolerance");
     }
     if (!(o.quantile > 0 && o.quantile <= 1)) {
         std::ostringstream msg;
         msg << "tolerance quantile " << o.quantile << " is invalid (expected 0 < q <= 1; 1 is the maximum)";
-        return bad_input(msg.str());
+        return bad_input(msg.str(), "TableSizeSearchOptions::quantile");
     }
     if (auto st = check_counts(o.value_counts, "the list of value counts"); !st) return st;
     if (auto st = check_counts(o.sigma_counts, "the list of sigma counts"); !st) return st;

@@ -17,14 +17,36 @@ enum class ErrorKind {
     Runtime = 4,   // an internal or library failure
 };
 
+// An error about an option names it in `message` by the options struct's
+// field, qualified ("ApplyOptions::lod -1 is invalid ..."), and records that
+// name in `field`: a front end may replace the name in the message with its
+// own for the option (the CLI: its flag, docs/exit-codes.md). A message may
+// name more fields than the one recorded (the first it names, or the one
+// whose value is wrong). Messages that name no option leave `field` empty.
 struct Error {
     ErrorKind kind = ErrorKind::Runtime;
     std::string message;
+    std::string field;
+
+    Error() = default;
+    Error(ErrorKind kind_, std::string message_, std::string field_ = {})
+        : kind(kind_), message(std::move(message_)), field(std::move(field_))
+    {
+    }
 };
 
-inline Error io_error(std::string message) { return {ErrorKind::Io, std::move(message)}; }
-inline Error bad_input(std::string message) { return {ErrorKind::BadInput, std::move(message)}; }
-inline Error runtime_error(std::string message) { return {ErrorKind::Runtime, std::move(message)}; }
+inline Error io_error(std::string message, std::string field = {})
+{
+    return {ErrorKind::Io, std::move(message), std::move(field)};
+}
+inline Error bad_input(std::string message, std::string field = {})
+{
+    return {ErrorKind::BadInput, std::move(message), std::move(field)};
+}
+inline Error runtime_error(std::string message) { return {ErrorKind::Runtime, std::move(message), {}}; }
+
+// The same error with `prefix` (where it happened) before its message.
+inline Error prefixed(const std::string& prefix, const Error& e) { return {e.kind, prefix + e.message, e.field}; }
 
 // A value or an Error. Minimal by design: construct from either, test with
 // has_value()/operator bool, read with value()/error().

@@ -1,18 +1,18 @@
-#include "cmfilter/render/bench_chart.h"
+#include "bench/bench_chart.h"
 
+#include "bench/gnuplot.h"
 #include "cmfilter/util/atomic_output.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <utility>
 #include <vector>
 
-namespace cmfilter {
+namespace cmfilter::bench {
 
 namespace {
 
@@ -79,7 +79,8 @@ Status write_bench_chart(const SceneBench& bench, const std::string& png_path)
     if (auto st = check_output_path(png_path, ".png"); !st) return st;
     auto out = AtomicOutput::begin(png_path);
     if (!out) return out.error();
-    const std::string data = out->temp_path() + ".dat", script = out->temp_path() + ".gp";
+    const std::string data = out->temp_path() + ".dat";
+    std::string program;
     {
         // series: 0 naive, 1 gaussian sqrt, 2 gaussian linear, 3 supersample
         // (in rays order), 4 other footprint widths, 5 tolerance tables or
@@ -157,23 +158,14 @@ Status write_bench_chart(const SceneBench& bench, const std::string& png_path)
         for (const Point& pt : points)
             d << pt.series << "\t" << pt.label << "\t" << pt.seconds << "\t" << pt.error << "\t" << pt.label_y << "\t"
               << (pt.labelled ? 1 : 0) << "\n";
-        std::ofstream g(script);
-        g << bench_chart_script(bench, data, out->temp_path());
+        program = bench_chart_script(bench, data, out->temp_path());
     }
-    const std::string command = "gnuplot " + quoted(script) + " 2>&1";
-    std::string output;
-    int status = -1;
-    if (FILE* pipe = popen(command.c_str(), "r")) {
-        char buffer[256];
-        while (std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
-        status = pclose(pipe);
-    }
+    auto drawn = run_gnuplot(program);
     std::remove(data.c_str());
-    std::remove(script.c_str());
-    if (status != 0)
-        return io_error("cannot draw '" + png_path + "' with gnuplot (is it installed? apt-get install gnuplot-nox)" +
-                        (output.empty() ? std::string() : ": " + output));
+    if (!drawn)
+        return io_error("cannot draw '" + png_path + "' with gnuplot (is it installed? apt-get install gnuplot-nox): " +
+                        drawn.error().message);
     return out->commit();
 }
 
-}  // namespace cmfilter
+}  // namespace cmfilter::bench

@@ -27,7 +27,7 @@
 #include <string>
 #include <vector>
 
-namespace cmfilter {
+namespace cmfilter::bench {
 
 struct BenchConfiguration {
     RenderMethod method = RenderMethod::Gaussian;
@@ -105,6 +105,11 @@ struct BenchOptions {
     std::function<void(const std::string&)> note;  // one line per finished render, may be empty
 };
 
+// BadInput naming the field unless kReferenceSamples <= reference_samples
+// <= max_reference_samples <= kMaxSamples and reference_repeat is finite and
+// >= 0; bench_scene checks it first.
+Status check_reference_options(const BenchOptions& options);
+
 // `materials` are re-baked in place for each gaussian configuration (their
 // colour maps stay), or fitted to its tolerance (choose_surface_tables). An
 // exact configuration runs only when every surface has a texture driver with
@@ -120,4 +125,4 @@ Expected<SceneBench> bench_scene(const Scene& scene, std::vector<Material>& mate
 // repeatability as method "reference-repeat"), for every scene.
 std::string bench_csv(const std::vector<SceneBench>& benches);
 
-}  // namespace cmfilter
+}  // namespace cmfilter::bench

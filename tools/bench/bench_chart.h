@@ -2,16 +2,17 @@
 // reference over wall time, log-log, one point per configuration, labelled;
 // supersampling joined as a curve (more rays: right and down), the gaussian
 // tables by spacing, naive alone, the target 1.0 as a line and the
-// reference's own time as a vertical line. Drawn with gnuplot (pngcairo),
-// which must be on the PATH; written atomically.
+// reference's own time as a vertical line. Drawn by gnuplot (pngcairo),
+// started without a shell (gnuplot.h), which must be on the PATH; written
+// atomically.
 #pragma once
 
 #include "cmfilter/util/error.h"
-#include "cmfilter/render/render_benchmark.h"
+#include "bench/render_benchmark.h"
 
 #include <string>
 
-namespace cmfilter {
+namespace cmfilter::bench {
 
 // The gnuplot program that draws `bench` into `png_path` from `data_path`
 // (written by write_bench_chart beside it).
@@ -20,4 +21,4 @@ std::string bench_chart_script(const SceneBench& bench, const std::string& data_
 // Io when gnuplot cannot be run or fails; the PNG is not left half-written.
 Status write_bench_chart(const SceneBench& bench, const std::string& png_path);
 
-}  // namespace cmfilter
+}  // namespace cmfilter::bench

@@ -2,7 +2,7 @@
 // two references with other seeds further apart than asked, both grow round
 // by round, and averaging k independent rounds must shrink their difference
 // like 1 / sqrt(k), the Monte-Carlo rate, whatever the code reports.
-#include "cmfilter/render/render_benchmark.h"
+#include "bench/render_benchmark.h"
 
 #include "render_test_support.h"
 
@@ -13,6 +13,7 @@
 #include <vector>
 
 using namespace cmfilter;
+using namespace cmfilter::bench;
 
 namespace {
 

@@ -1,4 +1,4 @@
-#include "cmfilter/render/render_benchmark.h"
+#include "bench/render_benchmark.h"
 
 #include "cmfilter/color/ciede2000.h"
 #include "cmfilter/scene/tolerance_tables.h"
@@ -11,7 +11,7 @@
 #include <utility>
 #include <sstream>
 
-namespace cmfilter {
+namespace cmfilter::bench {
 
 std::string BenchConfiguration::label() const
 {
@@ -183,16 +183,30 @@ Expected<std::pair<RenderedImage, RenderedImage>> repeatable_references(
 
 }  // namespace
 
+Status check_reference_options(const BenchOptions& options)
+{
+    if (options.reference_samples < kReferenceSamples || options.reference_samples > kMaxSamples)
+        return bad_input("BenchOptions::reference_samples " + std::to_string(options.reference_samples) +
+                             " is out of range (expected " + std::to_string(kReferenceSamples) + " to " +
+                             std::to_string(kMaxSamples) + ")",
+                         "BenchOptions::reference_samples");
+    if (!(options.reference_repeat >= 0) || !std::isfinite(options.reference_repeat))
+        return bad_input("BenchOptions::reference_repeat " + std::to_string(options.reference_repeat) +
+                             " is out of range (expected a finite mean CIEDE2000 >= 0)",
+                         "BenchOptions::reference_repeat");
+    if (options.max_reference_samples < options.reference_samples || options.max_reference_samples > kMaxSamples)
+        return bad_input("BenchOptions::max_reference_samples " + std::to_string(options.max_reference_samples) +
+                             " is out of range (expected BenchOptions::reference_samples " +
+                             std::to_string(options.reference_samples) + " to " + std::to_string(kMaxSamples) + ")",
+                         "BenchOptions::max_reference_samples");
+    return ok();
+}
+
 Expected<SceneBench> bench_scene(const Scene& scene, std::vector<Material>& materials,
                                  const BenchOptions& options)
 {
     if (options.repeats < 1) return bad_input("bench: repeats must be >= 1, got " + std::to_string(options.repeats));
-    if (!(options.reference_repeat >= 0) || !std::isfinite(options.reference_repeat))
-        return bad_input("bench: the reference repeat tolerance must be finite and >= 0, got " +
-                         std::to_string(options.reference_repeat));
-    if (options.max_reference_samples < options.reference_samples)
-        return bad_input("bench: the most reference rays (" + std::to_string(options.max_reference_samples) +
-                         ") are fewer than one round's (" + std::to_string(options.reference_samples) + ")");
+    if (auto st = check_reference_options(options); !st) return st.error();
     SceneBench bench;
     bench.scene = scene.path;
 
@@ -340,4 +354,4 @@ std::string bench_csv(const std::vector<SceneBench>& benches)
     return s.str();
 }
 
-}  // namespace cmfilter
+}  // namespace cmfilter::bench
