@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Sets cmfilter up on a Debian machine and runs one of its two jobs:
 #   bash bootstrap.sh example   install what is missing, build, bake the bundled example into out/example/
 #   bash bootstrap.sh test      install what is missing, build, run the whole test suite

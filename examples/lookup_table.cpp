@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Using libcmfilter from a renderer: load a baked table, then turn a driver's
 // mean and standard deviation over a footprint into a filtered colour with one
 // bilinear lookup (Heitz et al. 2013, eq. 10).

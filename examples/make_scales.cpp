@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Writes a seamless snake-skin displacement: overlapping rounded scales in
 // offset rows, one channel of heights in texture units (one repeat = 1, so
 // height_scale 1), as half-float OpenEXR. The bundled

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The main job on the bundled example:
 #  1. bake a prefiltered table (eq. 10) for every colour map in luts/, describe
 #     each, and write an sRGB preview of each table (sigma grows downwards);

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Checks that the committed colour maps in luts/ are exactly what
 # cmfilter-make-luts produces today. Run with cmake -P and the variables
 # GENERATOR (the cmfilter-make-luts executable), IDIFF (OpenImageIO's idiff),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // cmfilter-make-luts: writes the example colour maps that ship in luts/.
 // Each map is an RGB 8-bit PNG whose texels are sRGB-encoded values (256 x 1
 // gradients, and one 64 x 64 slope-vector map);

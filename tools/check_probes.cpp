@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // --probes, for the commands that render.
 #include "command.h"
 

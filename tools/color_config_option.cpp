@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The OpenColorIO config a command uses: --ocio-config FILE, else $OCIO, else
 // the config built into libcmfilter.
 #include "command.h"

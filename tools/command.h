@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The shape every cmfilter subcommand takes: a setup function registers the
 // subcommand's options on the CLI11 app and returns the action to run once
 // parsing succeeded. Actions call the library and report; they return a

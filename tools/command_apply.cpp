@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // cmfilter apply: the filtered colour image of a colour-mapped driver at a
 // level of detail, by one of the methods naive, gaussian (Heitz et al. 2013,
 // eq. 10 with the moments of sec. 4.2), exact (sec. 4.1) or reference (the box

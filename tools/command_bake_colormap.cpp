@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // cmfilter bake-colormap: colour-map image -> prefiltered table T(v, sigma)
 // (eq. 10), with its measured bilinear lookup error; with --tolerance, the
 // smallest table that meets a CIEDE2000 tolerance; with --for, sigma_max from

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // cmfilter bake-moments: driver texture -> moment pyramid, per level the box
 // means of (f - c) and (f - c)^2 (Heitz et al. 2013, sec. 4.2) in a tiled,
 // MIP-mapped EXR that OpenImageIO's TextureSystem reads.

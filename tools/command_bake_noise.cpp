@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // cmfilter bake-noise: a procedural noise -> its sigma table, the standard
 // deviation a footprint of each LOD leaves unresolved (Heitz et al. 2013,
 // sec. 4.2), measured by Monte-Carlo with confidence intervals

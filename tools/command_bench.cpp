@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // cmfilter bench: speed against accuracy on scenes (docs/render.md): every
 // method and configuration timed and compared with a reference (1024 rays
 // per pixel, more where two references with other seeds differ by > 0.2),

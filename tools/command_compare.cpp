@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // cmfilter compare: RMSE and CIEDE2000 (mean, p95, max) between two images of
 // the same size, both in scene-linear, with an optional per-pixel heat map.
 #include "command.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // cmfilter info: what a cmfilter artefact is and every parameter it was baked with.
 #include "command.h"
 

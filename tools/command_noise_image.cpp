@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // cmfilter noise-image: a procedural noise sampled at pixel centres into a
 // single-channel float EXR driver (docs/noise.md), for bake-moments and apply.
 #include "command.h"

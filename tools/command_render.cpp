@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // cmfilter render: a scene file (docs/scene-format.md) rendered with one
 // filtering method (docs/render.md): scene-linear EXR or sRGB PNG/JPEG, and
 // with --aov the per-pixel filtered mean, sigma and LOD as float EXRs.

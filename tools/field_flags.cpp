@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Library messages name options by field; the command line names them by flag.
 #include "command.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // cmfilter: the command-line front end of libcmfilter. Parses, dispatches to
 // one subcommand, prints its error once and exits with the error's code.
 #include "command.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // "vmin:vmax" option values.
 #include "command.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // "WxH" option values.
 #include "command.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Percent progress on stderr for long commands.
 #include "command.h"
 

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Accuracy of `cmfilter apply`'s methods against the box-filtered ground truth
 # (`--method reference`), LOD 0..8, for every bundled colour map, on
 #   gaussian  a Gaussian-like driver (blurred white noise, mean 0.5, sd 0.18:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Per-pixel cost of the paper's filtered lookup against naive filtering, on
 // in-memory data, timed in the same process:
 //   naive     bilinear fetch of the mean texture (one channel), then C0(mean)

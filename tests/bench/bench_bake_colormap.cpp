@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Benchmarks for bake-colormap, printed as Markdown for docs/benchmarks.md.
 //   cmfilter-bench-bake-colormap timing LUTS_DIR   bake time / EXR write time
 //   cmfilter-bench-bake-colormap spacing LUTS_DIR  lookup error, linear vs sqrt sigma axis

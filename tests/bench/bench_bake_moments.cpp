@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Benchmark for bake-moments against maketx, printed as Markdown for
 // docs/benchmarks.md.
 //   cmfilter-bench-bake-moments SIZE DIR [RUNS]

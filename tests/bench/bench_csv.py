@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Reading a `cmfilter bench` CSV: its rows, its scenes in order, one row by
 scene and configuration, and a number from a row."""
 import csv

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Shared by the noise benchmarks: the noise a spec's text form describes, or
 // none with the reason on stderr.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Cost of the filtered noise evaluation (sec. 4.2) against the unfiltered
 // noise with every octave evaluated, on the same points, timed in the same
 // process:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the benchmark programs share: the machine's name for their reports,
 // and timings taken as the fastest of repeated runs in the same process (the
 // runs least disturbed by other work on a shared machine). Speed is reported

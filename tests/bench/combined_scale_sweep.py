@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """A combined microsurface material across scales (docs/slope.md): the
 paper's figure 11 as a number.
 

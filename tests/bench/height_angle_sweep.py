@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Height-correlated colour against view and light angle (docs/microsurface.md).
 
 For each angle from 0 to 89 degrees and four set-ups (the view swept with

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The bundled microsurface scene by every method, side by side like the
 # paper's figure 8 (docs/microsurface.md): naive, gaussian, gaussian-exact,
 # exact and the ray-traced reference (its eq. 14 albedo, shaded by the

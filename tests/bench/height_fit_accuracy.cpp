@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // How far the paper's Gaussian fit of the height filtering distribution
 // (eqs. 17-18) is from D_h's exact mean and central standard deviation
 // (height_filtering.h), over the Lambda sum L, in units of sigma_h

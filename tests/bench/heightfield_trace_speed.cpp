@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Speed of the heightfield tracer (heightfield_tracer.h) on one thread: a
 // camera ray traced from above the slab and, where it hits, a shadow ray
 // from the hit towards a light at the same angle from the normal, mirrored

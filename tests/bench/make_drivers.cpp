@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Test drivers for the accuracy experiments of docs/apply.md, written as
 // one-channel float32 OpenEXR files (drivers are data: no colour space).
 //

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """A microsurface material's colour against view and light angle.
 
 For each angle and set-up (the view swept with the light overhead, the

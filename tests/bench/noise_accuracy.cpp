@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Accuracy of the filtered noise colour (sec. 4.2) against a supersampled
 // reference, per bundled map and LOD:
 //   gaussian       T(mean_over_footprint, sigma): the table T of the map

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Accuracy of the filtered noise colour T(mean, sigma) (sec. 4.2) and of the
 # naive C0(mean) against a supersampled reference (32 x 32 jittered samples
 # per square footprint), per bundled map and LOD, for 6-octave gradient fBm and

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Sigma against LOD for each noise kind: bakes each noise's sigma table with
 # `cmfilter bake-noise --csv` and charts the box and Gaussian columns, with
 # the noise's global sigma as a horizontal line (docs/noise-accuracy.md).

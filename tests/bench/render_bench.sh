@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Speed against accuracy of every render method on the bundled scenes
 # (docs/render.md): runs `cmfilter bench` on examples/scenes/*.json at their
 # own resolution, copies the CSV to docs/data/render-bench.csv and the charts

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Summary of a `cmfilter bench` CSV against the render targets (docs/render.md):
 gaussian (256x256 sqrt table, rms footprint) against naive, the supersample of
 about gaussian's time, and the reference; and exact against gaussian on the

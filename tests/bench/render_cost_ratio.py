@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """gaussian's cost against naive's, per scene (docs/render.md, "Cost").
 
 The bench's own times (every configuration once after the other, threads

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Where each render method breaks down (docs/render.md, "Noise scale"): the
 # bundled terrain ground plane and far sphere with their fBm made finer and
 # finer (the texture mapping's scale times 1, 2, 4, ... 128 for the plane,

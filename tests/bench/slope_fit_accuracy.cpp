@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // How far the slope-filtered colour <C_s, D_s> of eq. 20 computed with the
 // Gaussian of D_s's exact moments (gaussian_slope_color) is from the colour
 // over the exact D_s (exact_slope_color), in CIEDE2000 (scene-linear

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """How far eq. 19's assumption moves a slope colour (docs/slope.md).
 
 Eq. 19 takes the slope colour C_s and the BRDF as uncorrelated: the filtered

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """The snake's slope colour against view angle (docs/microsurface.md#the-snake).
 
 A far patch of examples/scenes/snake-scales.exr (a textured displacement,

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Table sizes and the small-sigma shortcut in a `cmfilter bench` CSV
 (docs/render.md, "Table sizes and the small-sigma shortcut"): per scene, the
 bytes of the tables fitted to tolerances 1 and 0.5 against the fixed 256 x 256

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The smallest table for a tolerance (`bake-colormap --tolerance`), per bundled
 # colour map, laid over the example scenes' domain [-0.68, 0.68] (clamp, as in
 # examples/scenes/*.json), at each tolerance, with

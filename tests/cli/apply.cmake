@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # apply: a driver's moments filtered through a colour table into an image. Its
 # inputs are baked by cli.apply.setup (CMakeLists.txt), fixture apply_inputs.
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # bake-colormap: a colour map's Gaussian colour table, checked independently.
 cmfilter_cli_case(NAME help.bake-colormap EXIT 0 STDOUT "--sigma-spacing" COMMAND ${CMF} bake-colormap --help)
 

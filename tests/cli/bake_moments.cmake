@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # bake-moments: a driver's moment pyramid (and histogram pyramid).
 cmfilter_cli_case(NAME help.bake-moments EXIT 0 STDOUT "--wrap" COMMAND ${CMF} bake-moments --help)
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # bake-noise: a noise's sigma table per LOD.
 cmfilter_cli_case(NAME help.bake-noise EXIT 0 STDOUT "--lod-step" COMMAND ${CMF} bake-noise --help)
 

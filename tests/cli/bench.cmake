@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # bench: speed against accuracy on scenes.
 cmfilter_cli_case(NAME help.bench EXIT 0 STDOUT "--reference-spp" COMMAND ${CMF} bench --help)
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # The binary itself: its version, its help, and usage errors before any command runs.
 cmfilter_cli_case(NAME version EXIT 0 STDOUT "^cmfilter [0-9]+\\.[0-9]+\\.[0-9]+" COMMAND ${CMF} --version)
 cmfilter_cli_case(NAME help EXIT 0 STDOUT "bake-colormap" COMMAND ${CMF} --help)

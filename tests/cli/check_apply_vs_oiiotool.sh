@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Checks `cmfilter apply --method reference` (the box mean of C0(f) over each
 # footprint) against OpenImageIO's own tools: `oiiotool --colormap` maps the
 # driver through the same piecewise-linear map, `maketx --filter box` box-mips

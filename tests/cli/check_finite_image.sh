@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # An image a command-line test wrote: it exists, OpenImageIO reads it as
 # WIDTH x HEIGHT, and every channel of every pixel is finite (oiiotool
 # --stats: no NaN, no infinity, WIDTH * HEIGHT finite values), and with

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Checks cmfilter compare's RMSE against OpenImageIO's own (oiiotool --diff,
 # "RMS error": the root mean square over every channel of every pixel). The
 # two agree only for images whose values cmfilter does not convert (float

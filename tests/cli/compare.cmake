@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # compare: two images' CIEDE2000 differences and their heat map.
 cmfilter_cli_case(NAME help.compare EXIT 0 STDOUT "--heatmap-max" COMMAND ${CMF} compare --help)
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # The library's examples, run on what the command-line tests bake.
 
 # The library example reads a table back and looks it up. v = 0.5 lies midway

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # info: what a cmfilter artefact holds. The artefacts of bake-moments, apply,
 # noise-image and bake-noise are read back in those commands' files.
 cmfilter_cli_case(NAME help.info EXIT 0 STDOUT "FILE" COMMAND ${CMF} info --help)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Writes the inputs the command-line tests need, including the bad ones that
 // no image tool would write on purpose: a NaN texel, an Inf texel, a text
 // file named .png, an empty file, a 2-D grid, an 8-bit ramp (plain, and

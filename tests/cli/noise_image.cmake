@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # noise-image: a procedural noise driver written as an image.
 cmfilter_cli_case(NAME help.noise-image EXIT 0 STDOUT "--scale" COMMAND ${CMF} noise-image --help)
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # render: a scene file rendered per pixel.
 cmfilter_cli_case(NAME help.render EXIT 0 STDOUT "--footprint" COMMAND ${CMF} render --help)
 

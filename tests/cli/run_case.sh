@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # One command-line test case: runs a command and checks its exit code, that
 # stderr matches a pattern and holds exactly one "error:" line (errors are
 # printed once), and that the named outputs (and no temporary files beside

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Independent check of a table written by `cmfilter bake-colormap`: decodes
 // the map image with the stated transfer formula (not OpenColorIO; "srgb" is
 // the C1 sRGB curve of cmfilter's built-in config, see

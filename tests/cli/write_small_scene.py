@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Writes a copy of a scene file at another resolution, its relative file
 paths made absolute (against the scene's own folder) so that the copy can
 stand anywhere: python3 write_small_scene.py SCENE OUT WIDTH HEIGHT."""

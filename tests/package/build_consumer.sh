@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Configures and builds tests/package/consumer against an install prefix,
 # with CMAKE_PREFIX_PATH the only way to cmfilter.
 #   build_consumer.sh CONSUMER_SOURCE BUILD PREFIX CXX EXAMPLE_CPP [LAUNCHER]

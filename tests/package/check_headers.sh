@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Compiles every installed header on its own (twice in one file, for its
 # include guard) against the install prefix only, with the flags pkg-config
 # gives for cmfilter: a public header that includes an internal one, or that

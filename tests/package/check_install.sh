@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Installs a build into a fresh prefix and checks what lands there: the
 # library, its CMake and pkg-config packages, exactly the public headers of
 # lib/public_headers.txt, the cmfilter command and the data under

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Builds examples/lookup_table.cpp with nothing but `pkg-config --cflags --libs
 # cmfilter` (--static for the static library) against the install prefix,
 # and runs it on TABLE; the caller checks what it prints.

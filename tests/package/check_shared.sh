@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # A second, shared (BUILD_SHARED_LIBS=ON) build of the library alone, installed
 # into its own prefix: its SONAME, then examples/lookup_table.cpp and the
 # plugin built against it by find_package and pkg-config, each run on TABLE.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Checks an installed shared libcmfilter: its SONAME is libcmfilter.so.SOVERSION
 # and the development link libcmfilter.so points at it.
 #   check_soname.sh LIBDIR_PATH SOVERSION

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Runs a command and checks it exits 0 and that its standard output matches
 # an extended regular expression.
 #   expect_output.sh ERE -- COMMAND...

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Lists the C++ sources that clang-format, with the repository's .clang-format,
 # would change, and exits 1 if there are any (0 if there are none). Without
 # clang-format it changes nothing and exits 77, the code ctest's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Test-only reference for the level geometry of cmfilter's pyramids, straight
 // from docs/moments-format.md: texel (x, y) of a w x h level over a W x H
 // level 0 is the mean over the level-0 rectangle

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Helpers for the microsurface tests: angles, a test microsurface, a small
 // clamp colour map whose channels
 // all lie strictly inside (0, 1), a colour layer built from it by hand

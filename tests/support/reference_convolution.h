@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Test-only reference for eq. 10, written independently of libcmfilter: the
 // piecewise-linear colour map evaluated straight from its definition, and
 // (C0 * N(0, sigma^2))(v) by brute-force Gauss-Legendre quadrature over

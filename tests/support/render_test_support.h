@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Helpers for the renderer's unit tests: printing a Vec3 in doctest messages,
 // finiteness, angles, central differences, a scene camera, a terrain fBm
 // material, and the CIEDE2000 difference of two renders.

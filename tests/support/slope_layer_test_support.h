@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Helpers for the tests of layered microsurface materials (slope colour maps,
 // base layers, combinations): the per-channel range of a slope map's texels,
 // materials prepared from a parsed scene, and the text of loading errors.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Helpers for unit tests that read image files: a scratch directory per test
 // file, and writing pixels (optionally tagged with a colour space) with
 // OpenImageIO.

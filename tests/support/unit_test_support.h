@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Helpers shared by the unit tests: a library colour map paired with its
 // independent test-side twin, and the built-in colour config.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The bench's reference (render_benchmark.h): where one round of rays leaves
 // two references with other seeds further apart than asked, both grow round
 // by round, and averaging k independent rounds must shrink their difference

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "bench/bench_chart.h"
 
 #include "bench/gnuplot.h"

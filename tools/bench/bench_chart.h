@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The chart of a SceneBench (render_benchmark.h): mean CIEDE2000 against the
 // reference over wall time, log-log, one point per configuration, labelled;
 // supersampling joined as a curve (more rays: right and down), the gaussian

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // gnuplot started without a shell: posix_spawnp finds it on the PATH, the
 // program goes to its standard input through a pipe, and what it prints on
 // standard output and standard error comes back through another.

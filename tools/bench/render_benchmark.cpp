@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "bench/render_benchmark.h"
 
 #include "cmfilter/color/ciede2000.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Speed against accuracy for `cmfilter bench` (docs/render.md): one scene
 // rendered by every method and configuration, each timed (the pixel loop's
 // wall time, fastest of `repeats`) and compared per pixel (CIEDE2000) with a

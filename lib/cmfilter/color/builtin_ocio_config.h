@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The OpenColorIO config compiled into libcmfilter (source: lib/ocio/config.ocio).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // CIEDE2000 colour difference: scene-linear Rec.709 -> XYZ -> CIE L*a*b*, then
 // the CIEDE2000 formula. Each step cites its equation in Sharma, Wu & Dalal
 // (2005), "The CIEDE2000 color-difference formula: implementation notes,

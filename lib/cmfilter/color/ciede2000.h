@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // CIEDE2000 colour difference between scene-linear Rec.709 colours: the
 // conversion to CIE L*a*b* (D65, white RGB (1,1,1) at L* = 100) and the full
 // CIEDE2000 formula with kL = kC = kH = 1, implemented after Sharma, Wu & Dalal,

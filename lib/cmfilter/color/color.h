@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A scene-linear RGB triple, the colour type shared by maps, tables and metrics.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/color/color_config.h"
 
 #include "cmfilter/color/builtin_ocio_config.h"

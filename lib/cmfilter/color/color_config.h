@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Colour management through OpenColorIO: the config cmfilter filters with
 // (built in, or a studio config from a file), name resolution with helpful
 // errors, and conversions to and from its scene_linear role.

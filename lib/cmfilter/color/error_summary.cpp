@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Summary statistics of an error sample; p95 is the nearest-rank percentile
 // (Hyndman & Fan 1996, "Sample quantiles in statistical packages", definition 1:
 // the value at rank ceil(p n) of the sorted sample).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Summary statistics of a sample of non-negative errors (e.g. CIEDE2000
 // differences): count, arithmetic mean, 95th percentile and maximum.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The continuous colour map C0 of the paper (section 4): the piecewise-linear
 // interpolant through the texel centres of a scene-linear RGB gradient, laid
 // over the driver domain [vmin, vmax] and continued outside it by a WrapMode.

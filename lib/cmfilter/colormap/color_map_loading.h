@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Loading a colour map from an image: pick the gradient (a W x 1 or 1 x H
 // image, or one row or column of a larger one), decide its colour space
 // (--colorspace, else the file's own metadata, else linear for float files and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Colour maps driven by a heightfield's slope s = grad h = (s_x, s_y) (Heitz
 // et al. 2013, sec. 5.2: C_s(n) of eq. 20, the normal n = (-s_x, -s_y, 1) /
 // sqrt(1 + |s|^2) and the slope being the same information).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/colormap/slope_color_map_loading.h"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Loading a slope-vector colour map (slope_color_map.h) from an image, by the
 // conventions of color_map_loading.h: the colour space from `colorspace`,
 // else the file's own metadata, else linear for float files and sRGB for

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Shared steps of reading and writing single-image cmfilter artefacts (EXR
 // with cmfilter:* metadata): the kind and format-version check a reader does
 // first, and the final write of float pixels through an AtomicOutput.

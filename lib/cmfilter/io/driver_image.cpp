@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/io/driver_image.h"
 
 #include "cmfilter/util/sha256.h"

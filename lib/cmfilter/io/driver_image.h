@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reading a driver texture f: one channel of any image OpenImageIO reads,
 // taken as data. No colour conversion and no alpha premultiplication: 8- and
 // 16-bit codes map to [0, 1] as OpenImageIO's float conversion does (code /

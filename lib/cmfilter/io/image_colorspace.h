@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Which colour space an image's pixels are in, and their conversion to the
 // config's scene_linear role. One rule for every colour image cmfilter reads
 // (colour maps, compared images): an explicit name if the caller gives one,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reading any image OpenImageIO can read into float pixels, with errors that
 // tell a missing or unreadable file (Io) from a file that is not an image or
 // has no pixels (BadInput). Shared by colour maps and, later, drivers.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // JSON text parsed into a document for the library's JSON file formats, with
 // errors a user can act on: BadInput naming the file and, for malformed text,
 // the line and column (and byte offset) where the parser stopped. A key given

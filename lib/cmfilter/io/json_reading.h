@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Checked reading of a parsed JSON document (json_document.h), key by key:
 // every value carries the file and the JSON pointer that name it, so each
 // error (BadInput) reads "<file>: <pointer>: <what was expected>, got <what

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Conventions for cmfilter:* metadata on OpenImageIO specs: floating-point
 // parameters are stored as double attributes and read back as doubles
 // (float attributes, as older files or other tools write them, widened).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Writing a float image to disk, the one way every command does it: OpenEXR
 // keeps the scene-linear floats (any channel count) with cmfilter:* metadata;
 // PNG and JPEG (3 channels) hold 8-bit sRGB display codes, converted from

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Bilinear interpolation over a w x h grid of texels, as OpenImageIO's
 // TextureSystem does it inside a level (InterpBilinear): texel (x, y) has its
 // centre at s = (x + 0.5) / w, t = (y + 0.5) / h, (0, 0) being the top-left

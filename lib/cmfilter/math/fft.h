@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A radix-2 complex fast Fourier transform in double precision, planned once
 // per size and reused: the twiddle factors and the bit-reversal permutation
 // are computed when the plan is made. It serves the cosine-series bake of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Gauss-Hermite quadrature for the standard normal: n nodes z_i and weights
 // w_i (summing to 1) with E[f(Z)] ~ sum_i w_i f(z_i) for Z ~ N(0, 1), exact
 // for polynomials of degree <= 2n - 1. The nodes are the roots of the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // 8-point Gauss-Legendre quadrature: exact for polynomials of degree <= 15 on
 // [a, b]; the library's building block for smooth and piecewise-polynomial
 // integrals (split at the kinks before calling it).

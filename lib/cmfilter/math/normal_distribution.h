@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The standard normal distribution's CDF Phi in log form and its quantile,
 // for the height filtering distribution (height_filtering.h,
 // height_color.h), whose CDF is Phi^(L + 1).

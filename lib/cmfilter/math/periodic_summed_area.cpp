@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/math/periodic_summed_area.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A summed-area table over one repeat of a periodic N x N grid of cells, each
 // holding the same number of channels: the exact mean of the
 // piecewise-constant cells over any axis-aligned box, of any size and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The scaled complementary error function erfcx(a) = erfc(a) e^{a^2}, for
 // a >= 0: the factor that keeps Gaussian tail integrals finite and free of
 // cancellation where erfc itself underflows or loses its digits (Smith's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // How a texture continues beyond its edges when a lookup's footprint crosses
 // them, named as maketx and OpenImageIO's TextureSystem name them. A moment
 // pyramid stores its mode in the file ("wrapmodes"), so TextureSystem applies

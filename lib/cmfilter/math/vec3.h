@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A 3-D vector of doubles: points, directions and their derivatives in the
 // renderer's world space.
 #pragma once

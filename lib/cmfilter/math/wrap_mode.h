@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // How a colour map continues outside its driver domain [vmin, vmax].
 #pragma once
 

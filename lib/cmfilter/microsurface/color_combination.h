@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // How a microsurface material's colour layers combine (Heitz et al. 2013,
 // sec. 6): a weighted sum k0 C0 + k1 C_h + k2 C_s, or the product
 // C0 C_h C_s, of the layers present (microsurface_albedo.h filters either).

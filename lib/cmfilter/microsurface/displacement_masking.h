@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Smith's masking and shadowing on a textured displacement from the
 // texture's own statistics rather than a Gaussian's (Heitz et al. 2013,
 // eqs. 2-3; Heitz 2014, "Understanding the masking-shadowing function in

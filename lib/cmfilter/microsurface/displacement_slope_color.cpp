@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/microsurface/displacement_slope_color.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The slope layer of a textured displacement (displacement_texture.h) from
 // its own slopes and heights rather than a Gaussian (Heitz et al. 2013, sec.
 // 5.2): the `exact` method's colour <C_s, D_s> (eq. 20) and visibility V

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A textured displacement: a periodic heightfield read from a one-channel
 // image, with the slopes and the footprint statistics that slope- and
 // height-coloured maps need (Heitz et al. 2013, sec. 5.2: the slope

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A Gaussian microsurface for height-correlated colour filtering (Heitz et
 // al. 2013, sec. 5.1): heights h(x, y) = sum_k a_k cos(2 pi <f_k, (x, y)> +
 // phi_k), a sum of many random-phase cosines, Gaussian by the central limit

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The exact height-filtered colour <C_h, D_h> of eq. 14 (Heitz et al. 2013,
 // sec. 5.1), without the Gaussian approximation of eqs. 17-18: the mean of a
 // colour map C_h over the heights the viewer sees lit, distributed as D_h

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/microsurface/height_filtered_albedo.h"
 
 #include "cmfilter/microsurface/height_color.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The albedo of a height-coloured microsurface over one footprint (Heitz et
 // al. 2013, sec. 5.1), for each representation of the height filtering
 // distribution D_h (eqs. 15-16) `render` offers:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The height filtering distribution of a Gaussian microsurface (Heitz et al.
 // 2013, sec. 5.1): the heights a viewer sees lit, eqs. 15-16,
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/microsurface/height_moment_table.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The exact mean and central standard deviation of the height filtering
 // distribution D_h (eqs. 15-16; height_filtering.h) tabulated over the
 // Lambda sum L = Lambda_o + Lambda_i, for the renderer's `gaussian-exact`

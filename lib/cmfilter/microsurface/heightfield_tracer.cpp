@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/microsurface/heightfield_tracer.h"
 
 #include "cmfilter/math/fft.h"

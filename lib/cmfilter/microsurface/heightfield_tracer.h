@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A ray-traced heightfield: one tile of a periodic GaussianMicrosurface
 // (gaussian_microsurface.h, tile > 0) tabulated at the nodes of an N x N grid
 // (or any periodic grid of nodes given as they are, from_nodes: the texels of

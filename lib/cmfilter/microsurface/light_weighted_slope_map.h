@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Slope colour maps weighted by each facet's cosine to the light, for
 // filtering slope-coloured microsurfaces with the shading correlated with the
 // colour. Eq. 19 (Heitz et al. 2013, sec. 5.2) takes a facet's shading

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Moment tables of a textured displacement's slopes weighted by Smith's
 // masking from each point's height, for the `gaussian` methods' D_s there
 // (Heitz et al. 2013, sec. 5.2, extended as displacement_masking.h says).

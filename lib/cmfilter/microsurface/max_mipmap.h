@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A maximum mipmap over a periodic grid of n x n height nodes (n a power of
 // two): level k >= 1 holds, for each block of 2^k x 2^k texels, the largest
 // height of the (2^k + 1)^2 nodes at its corners and inside, so it bounds

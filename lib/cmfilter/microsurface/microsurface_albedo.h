@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The colour of a microsurface material (scene.h) over one footprint, its
 // layers (microsurface_colors.h) filtered and combined (Heitz et al. 2013,
 // secs. 5 and 6):

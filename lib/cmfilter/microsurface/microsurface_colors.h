@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The colour layers a microsurface's filtering reads (Heitz et al. 2013,
 // secs. 5-6): C_h over its heights with its Gaussian table (color_layer.h),
 // C_s over its slopes (slope_color_map.h), and how they combine with each

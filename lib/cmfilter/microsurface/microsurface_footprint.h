@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The part of a Gaussian microsurface a pixel resolves and the part it does
 // not (issue: heights that are visible geometry close up, filtered far away).
 // Over a pixel's footprint, the parallelogram P = {c + a e1 + b e2 : a, b in

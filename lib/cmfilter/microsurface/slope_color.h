@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The slope-filtered colour <C_s, D_s> of eq. 20 (Heitz et al. 2013, sec.
 // 5.2): the mean of a slope colour map (slope_color_map.h) over the slopes a
 // viewer sees, D_s (slope_filtering.h), for slopes N(m, Sigma) and the view

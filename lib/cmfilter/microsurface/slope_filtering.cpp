@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/microsurface/slope_filtering.h"
 
 #include "cmfilter/math/scaled_erfc.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The slope filtering distribution of a heightfield with Gaussian slopes
 // (Heitz et al. 2013, sec. 5.2, eq. 20): the slopes a viewer sees, weighted
 // by their foreshortened area. For slopes s = grad h = (s_x, s_y) ~ N(m, Sigma)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/microsurface/smith_lambda.h"
 
 #include "cmfilter/math/scaled_erfc.h"

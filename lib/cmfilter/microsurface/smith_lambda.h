@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Masking of a microsurface with Gaussian slopes (Heitz et al. 2013, sec.
 // 5.1): Smith's Lambda, eq. 3, and the mean visibility of eq. 13.
 //

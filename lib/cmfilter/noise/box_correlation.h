@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The box correlation of a stationary noise term t (n, or |n| for turbulence):
 // the mean of its normalised autocorrelation rho(d) = Cov(t(x), t(x + d)) / Var t
 // over the offsets d of a square of side k periods p centred at 0,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A procedural noise filtered over a footprint of width w (sec. 4.2): the two
 // parameters of the Gaussian filtering distribution N(mean, sigma^2) that the
 // colour-map table T(mean, sigma) is looked up with:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Fractal sums over any 2-D base noise n of base period p_0 (Musgrave,
 // "Texturing and Modeling", ch. 16; Perlin 1985 for turbulence):
 //     fBm:         f(x) = sum_{i<N} gain^i n(lacunarity^i x + s_i)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The box correlation (box_correlation.h) of 2-D Gabor noise (gabor_noise.h),
 // in closed form up to 1-D quadratures. By Campbell's theorem the
 // autocorrelation is lambda E[w^2] times that of one kernel (Lagae et al.

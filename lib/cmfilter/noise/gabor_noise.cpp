@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/noise/gabor_noise.h"
 
 #include "cmfilter/noise/noise_lattice.h"

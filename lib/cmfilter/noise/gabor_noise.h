@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // 2-D Gabor noise (Lagae, Lefebvre, Drettakis, Dutre 2009, "Procedural noise
 // using sparse Gabor convolution"): a sparse convolution
 //     n(x) = sum_i w_i g(x - x_i; omega_i)

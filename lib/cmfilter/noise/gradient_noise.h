@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Gradient (Perlin) noise in 2-D and 3-D, after Perlin's improved noise
 // (SIGGRAPH 2002): a pseudo-random gradient g_c at each integer lattice point c
 // chosen by a seeded LatticeHash, and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/noise/lattice_box_correlation.h"
 
 #include "cmfilter/math/gauss_legendre.h"

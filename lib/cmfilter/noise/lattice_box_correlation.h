@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Closed-form box correlations (box_correlation.h) of the 2-D lattice noises,
 // from the kernel s(t) = fade(1 - |t|) on [-1, 1] that both share
 // (noise_lattice.h), with independent zero-mean lattice draws:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/noise/noise_image.h"
 
 #include "cmfilter/io/artefact_file.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A procedural noise rendered as a driver image (docs/noise.md): a
 // single-channel float32 OpenEXR, channel "Y", holding data (no colour space),
 // pixel (i, j) (row j = 0 at the top) = noise(scale (i + 1/2), scale (j + 1/2)):

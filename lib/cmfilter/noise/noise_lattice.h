@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The seeded integer lattice shared by gradient and value noise (Perlin 1985,
 // 2002): a permutation of 0..255 drawn from an explicit seed, so each noise
 // object owns its table and two objects with the same seed agree bit for bit

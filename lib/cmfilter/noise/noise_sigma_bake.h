@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Baking a procedural noise's NoiseSigmaTable by Monte-Carlo (sec. 4.2: "we
 // precompute the noise standard deviation for different levels of detail and
 // store it in a 1D texture"; docs/bake-noise.md).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The per-LOD standard deviation of a procedural noise (sec. 4.2: "we
 // precompute the noise standard deviation for different levels of detail and
 // store it in a 1D texture"): sigma(L), the standard deviation a footprint of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The on-disk form of a baked noise sigma table (docs/bake-noise.md): a
 // one-row float32 OpenEXR, width = number of LODs (column k at
 // LOD lod_first + k lod_step), channels box_sigma, gaussian_sigma,

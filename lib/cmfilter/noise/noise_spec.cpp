@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/noise/noise_spec.h"
 
 #include "cmfilter/noise/gabor_box_correlation.h"

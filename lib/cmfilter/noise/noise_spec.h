@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A procedural noise as a value: basis, fractal sum, parameters and seed, with
 // a text form for the command line and for artefact metadata:
 //     BASIS[:key=value,...]                 one octave of gradient | value | gabor

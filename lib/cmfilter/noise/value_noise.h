@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Value noise (Lagae et al. 2010, sec. 3.1): a pseudo-random value v_c in
 // [-1, 1] at each integer lattice point c, chosen by a seeded LatticeHash as
 // v = 2 h / 255 - 1 (h in 0..255, so the 256 values are equally likely), and

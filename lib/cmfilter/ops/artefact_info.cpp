@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/ops/artefact_info.h"
 
 #include "cmfilter/ops/filtered_image_file.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What a cmfilter artefact is: its kind, a one-line description and every
 // cmfilter:* parameter it was baked with, read from any file OpenImageIO opens.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/ops/error_heatmap.h"
 
 #include "cmfilter/util/atomic_output.h"

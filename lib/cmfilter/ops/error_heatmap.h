@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Per-pixel colour-error heat maps: an error image drawn through a
 // perceptually ordered ramp (luminance rises monotonically) and written as an
 // 8-bit sRGB PNG. The ramp runs in sRGB code values over [0, max]:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/ops/filtered_image.h"
 
 #include "cmfilter/texture/box_pyramid.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The filtered colour image of a colour-mapped driver at one level of detail
 // (the `apply` command): per output pixel, the colour of the driver's
 // footprint at texture coordinates (s, t) = ((x + 0.5) / width, (y + 0.5) /

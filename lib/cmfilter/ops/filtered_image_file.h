@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Writing a filtered image (filtered_image.h): OpenEXR holds the float RGB
 // values as they are, in scene-linear, with how they were made as cmfilter:*
 // metadata; PNG and JPEG hold 8-bit sRGB display codes, converted from

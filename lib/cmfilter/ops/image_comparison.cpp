@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Image comparison: read, colour-manage, check, then one pass over the pixels
 // for the squared differences and the per-pixel CIEDE2000.
 #include "cmfilter/ops/image_comparison.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Comparing two colour images of the same size: both are brought to the
 // config's scene-linear space with OpenColorIO (the same colour-space rules as
 // colour maps, lib/cmfilter/io/image_colorspace.h), then measured per pixel.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One ray of the ray-traced ground truth for a microsurface plane (scene.h,
 // MaterialSource::microsurface): the plane displaced along its normal (the side
 // facing the camera) by the microsurface's heights, a tabulated heightfield

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A surface coloured by a textured displacement's layers (scene.h;
 // displacement_texture.h), for `render` (layered_surface.h): each probe's
 // footprint from the texture's moments (nothing it resolves is taken as

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/render/layered_surface.h"
 
 #include "cmfilter/render/displaced_plane_sample.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What a Gaussian microsurface's and a textured displacement's surfaces
 // share in `render` (surface_renderer.h; secs. 5-6): colours by layers
 // (microsurface_colors.h) masked and shadowed.

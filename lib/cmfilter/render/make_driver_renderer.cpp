@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/render/make_driver_renderer.h"
 
 #include "cmfilter/render/noise_surface.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The renderer of a noise or texture material (surface_renderer.h), as a
 // microsurface's base layer needs it: filtered over a footprint and read at
 // a point.

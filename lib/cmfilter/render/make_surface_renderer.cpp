@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/render/make_surface_renderer.h"
 
 #include "cmfilter/render/displacement_surface.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The renderer of a surface for its material's driver kind
 // (surface_renderer.h): the one dispatch over the kinds of material.h.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A surface coloured by a Gaussian microsurface's layers (sec. 5;
 // gaussian_microsurface.h), for `render` (layered_surface.h): each probe's
 // footprint filtered exactly over the microsurface's cosines

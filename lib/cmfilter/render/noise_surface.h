@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A surface coloured by C0 over a procedural noise (filtered_noise.h), for
 // `render` (surface_renderer.h). The one-ray methods filter the noise over
 // the centre ray's footprint (surface_hit.h), cut along its major edge into

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `cmfilter render`: a scene (scene.h) seen through its pinhole camera, each
 // pixel's colour-mapped surface filtered over the pixel's own footprint
 // (docs/render.md). Every method uses the same box pixel:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The methods and options of `render` (render.h).
 #pragma once
 

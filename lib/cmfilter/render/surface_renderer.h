@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // How `render` (render.h) colours one surface: one renderer per kind of
 // material driver (material.h), made once per surface by
 // make_surface_renderer (make_surface_renderer.h), the one place that tells

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A texture driver (filtered_texture.h) over the footprint of a pixel's
 // centre ray, for the one-ray methods of `render` (render.h). The footprint
 // is the parallelogram c + s e1 + t e2, s, t in [-1/2, 1/2], of the ray

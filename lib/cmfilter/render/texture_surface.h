@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A surface coloured by C0 over a texture driver (filtered_texture.h), for
 // `render` (surface_renderer.h): the one-ray methods filter its pyramids
 // over the centre ray's footprint (texture_footprint.h: naive, gaussian, and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The pinhole camera of a scene and its ray differentials (Igehy 1999,
 // "Tracing ray differentials"): for the ray through image point (px, py) (in
 // pixels, y down, pixel centres at half-integers), the origin, the unit

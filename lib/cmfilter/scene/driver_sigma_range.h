@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The largest footprint sigma a colour table will be looked up with for a
 // driver (bake-colormap --for): the sigma_max a table needs so that none of
 // that driver's lookups clamps (GaussianColorTable::lookup holds sigma above

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What `render` needs of each surface's material, loaded once
 // (scene_materials.h): its colour layer C0 with its Gaussian table
 // (color_layer.h), the driver that colours it, and where all of it came from.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Geometric coverage of a box pixel by the scene's surfaces, for the one-ray
 // methods (render.h): which share of the pixel sees each surface (nearest
 // first) and which share sees the background, where a silhouette, a horizon

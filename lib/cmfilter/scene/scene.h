@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A scene for `cmfilter render` (docs/scene-format.md): a pinhole camera, one
 // directional light, and surfaces (infinite planes, spheres), each with a
 // texture mapping and a material: a colour map driven by a procedural noise

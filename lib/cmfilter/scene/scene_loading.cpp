@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/scene/scene_loading.h"
 
 #include "cmfilter/io/json_document.h"

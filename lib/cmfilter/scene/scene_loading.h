@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reading a scene file (docs/scene-format.md) into a Scene: JSON parsed with
 // nlohmann-json, then checked key by key. Every error is BadInput and names
 // the file and the JSON path of the offending value (e.g.

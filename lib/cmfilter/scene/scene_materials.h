@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Each surface's material (material.h), loaded once for `render`, one
 // loader per driver kind: the colour map C0 (naive and supersampled methods
 // evaluate it exactly), its Gaussian table T(mean, sigma) (eq. 10), and the

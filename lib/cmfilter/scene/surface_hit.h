@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Ray-surface intersection for the renderer's planes and spheres, with the
 // hit's texture coordinates and their screen-space derivatives, transferred
 // from the camera's ray differentials (Igehy 1999, eq. 10-12): for a hit at

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Where a surface's image ends, in image coordinates (pixels, y down, as
 // Camera::ray). The camera's unnormalised direction D(px, py) is affine in
 // the image point (Camera::ImagePlane), so:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Tables that model no more than a scene needs (docs/render.md, "Table sizes
 // and the small-sigma shortcut"). For each surface:
 //   - with a tolerance (the caller's, else the scene's colormap/tolerance),

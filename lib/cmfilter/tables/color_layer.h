@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One colour layer of a material: a colour map over the values that drive it
 // (C0 over a driver's values, or C_h over a microsurface's heights), its
 // Gaussian table T(mean, sigma) (eq. 10), the small-sigma shortcut that takes

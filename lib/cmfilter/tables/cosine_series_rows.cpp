@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/tables/cosine_series_rows.h"
 
 #include "cmfilter/util/parallel_for.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Rows of the Gaussian table (eq. 10) of a clamp-wrapped colour map by the
 // cosine series of its mirrored extension, evaluated at every value node at
 // once with an FFT: the fast path for rows whose sigma spans a few value

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The gaussian method's colour for one filtered footprint (a pixel, or one
 // probe of it) with driver mean and standard deviation sigma (sec. 4.2):
 // T(mean, sigma), the bilinear lookup of the colour layer's table (eq. 10),

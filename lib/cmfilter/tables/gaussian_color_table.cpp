@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/tables/gaussian_color_table.h"
 
 #include "cmfilter/tables/cosine_series_rows.h"

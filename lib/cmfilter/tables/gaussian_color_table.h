@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The prefiltered colour-map table of section 4.2 (eq. 10):
 //     T(v, sigma) = (C0 * N(0, sigma^2))(v),  sigma in [0, sigma_max],
 // sampled on a grid of value nodes (columns) and sigma nodes (rows), looked up

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/tables/gaussian_color_table_file.h"
 
 #include "cmfilter/io/artefact_file.h"

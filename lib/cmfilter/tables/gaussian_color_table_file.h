@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The on-disk form of a GaussianColorTable: a scanline float32 RGB OpenEXR,
 // width = value nodes, height = sigma nodes (row 0 = sigma 0), carrying every
 // baking parameter as cmfilter:* metadata (docs/table-format.md). Written

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Exact Gaussian convolution of a piecewise-linear colour map (eq. 10 of the
 // paper):  T(v, sigma) = (C0 * N(0, sigma^2))(v) = <C0, N(v, sigma^2)>.
 //

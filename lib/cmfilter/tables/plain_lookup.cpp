@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/tables/plain_lookup.h"
 
 #include "cmfilter/color/ciede2000.h"

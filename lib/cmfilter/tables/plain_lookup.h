@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The small-sigma shortcut of the gaussian method (docs/render.md, "Table
 // sizes and the small-sigma shortcut"): where sigma is small enough, the
 // filtered colour T(v, sigma) = (C0 * N(0, sigma^2))(v) (eq. 10) is C0(v)

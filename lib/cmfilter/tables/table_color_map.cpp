@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/tables/table_color_map.h"
 
 #include <filesystem>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The colour map C0 a Gaussian colour table was baked from, rebuilt from the
 // table's own metadata (docs/table-format.md): the source image
 // (cmfilter:source), its colour space (cmfilter:colorspace), the gradient

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // How a surface's Gaussian table is chosen for rendering (tolerance_tables.h):
 // the options, and the record kept beside the material. The table is the fixed
 // default, or the smallest that meets a CIEDE2000 tolerance over the surface's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/tables/table_lookup_error.h"
 
 #include "cmfilter/tables/gaussian_convolution.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Measured (not assumed) accuracy of bilinear table lookups: CIEDE2000 between
 // GaussianColorTable::lookup(v, sigma) and the exact convolution T(v, sigma)
 // at random (v, sigma), v uniform over the domain [vmin, vmax] and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The smallest Gaussian colour table that meets a colour-difference tolerance
 // (bake-colormap --tolerance; docs/bake-colormap.md, "Smallest table for a
 // tolerance"): over a grid of value counts, sigma counts and both sigma

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/texture/anisotropic_probes.h"
 
 #include <algorithm>

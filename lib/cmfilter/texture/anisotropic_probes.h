@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Anisotropic footprints as several square-ish ones, the way texture units
 // filter anisotropically: the pixel's parallelogram (edges e1, e2 in texture
 // space, points c + s e1 + t e2 with s, t in [-1/2, 1/2]) is cut along its

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/texture/box_pyramid.h"
 
 #include "cmfilter/util/parallel_for.h"

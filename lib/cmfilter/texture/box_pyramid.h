@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Exact box-mean MIP levels of an N-channel image, with the level geometry of
 // a moment pyramid (docs/moments-format.md): level k is w_k x h_k =
 // max(1, W >> k) x max(1, H >> k), and its texel (x, y) is the mean over the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/texture/box_pyramid_file.h"
 
 #include "cmfilter/texture/box_pyramid.h"

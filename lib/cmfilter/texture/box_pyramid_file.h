@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Writing a box pyramid (box_pyramid.h) as a tiled, mip-mapped float32
 // OpenEXR that OpenImageIO's TextureSystem reads: level 0 streamed tile row
 // by tile row as the caller fills its rows, every upper level accumulated

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The ground truth for a box footprint (the `reference` method of `apply`):
 // the colour-mapped driver C0(f) per level-0 texel, in double, box-mipped with
 // the level geometry of the moment pyramid (box_pyramid.h,

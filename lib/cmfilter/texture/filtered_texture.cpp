@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/texture/filtered_texture.h"
 
 #include "cmfilter/math/bilinear_texels.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A driver texture f for the renderer, in texture coordinates (s, t) = (u, v)
 // of the surface (scene.h): one repeat, [0, 1]^2, is the whole image, (0, 0)
 // its top-left corner and t growing downwards (as in moment_texture.h), and

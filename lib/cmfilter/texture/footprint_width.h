@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One width for an anisotropic pixel footprint, to pick the LOD of a
 // procedural noise's sigma table (which is tabulated for square footprints).
 // A box pixel maps to the parallelogram spanned by e1 = d(u, v)/dx and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The exact filtering distribution of a driver with few distinct values
 // (Heitz et al. 2013, sec. 4.1, "exact solutions"): per MIP level and texel,
 // the histogram of f over the texel's box footprint, one channel per distinct

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Baking a moment pyramid (Heitz et al. 2013, sec. 4.2): for tabulated f,
 // "precompute the first two moments of f, mean f and mean f^2, at each level
 // of detail in a mipmap hierarchy"; a lookup then gets sigma_f^2 = mean f^2 -

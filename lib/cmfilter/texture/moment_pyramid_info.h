@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What a moment pyramid file says about itself: the cmfilter:* metadata that
 // bake_moment_pyramid writes into the file's header and MomentTexture reads
 // back (docs/moments-format.md). The attribute names live only here.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The driver a moment pyramid was baked from, read back by what needs its
 // level-0 texels beside the moments (apply's reference method, the
 // renderer's supersampled methods): the file at driver_path (the pyramid's

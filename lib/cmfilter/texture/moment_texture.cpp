@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/texture/moment_texture.h"
 
 #include "cmfilter/io/image_reading.h"

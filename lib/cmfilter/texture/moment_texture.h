@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reading a moment pyramid back and looking it up the way a renderer does:
 // through OpenImageIO's TextureSystem with bilinear interpolation inside a
 // level and trilinear (or anisotropic) blending across levels, never bicubic

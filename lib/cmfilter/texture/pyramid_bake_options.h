@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What every pyramid baked from a driver texture takes (moment pyramids,
 // histogram pyramids): the driver and how to read it, the output file, and
 // the tiled MIP-map's wrap, tiles and compression.

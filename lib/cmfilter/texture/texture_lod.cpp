@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/texture/texture_lod.h"
 
 #include "cmfilter/texture/moment_pyramid.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // How cmfilter's pyramids (moment and histogram pyramids, same level
 // geometry) are looked up at a level of detail through OpenImageIO's
 // TextureSystem: which levels it can reach, the isotropic filter width that

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/util/atomic_output.h"
 
 #include <cctype>

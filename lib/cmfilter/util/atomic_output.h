@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // All-or-nothing file output: writers write to a temporary file beside the
 // destination (same directory, same extension so OpenImageIO picks the same
 // format) and commit() renames it into place. A writer that fails, or an

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Typed errors for libcmfilter: every fallible library call returns Expected<T>,
 // which holds either a value or an Error whose kind maps onto one CLI exit code
 // (docs/exit-codes.md). No exceptions cross the library boundary.

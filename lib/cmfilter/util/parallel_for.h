@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A minimal static-schedule parallel loop over [0, count) on std::thread.
 // threads <= 0 uses every hardware thread; threads == 1 runs inline.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // SHA-256 written from FIPS 180-4 (NIST, August 2015): the functions of
 // section 4.1.2, the constants of section 4.2.2, the padding of section 5.1.1,
 // the initial hash value of section 5.3.3 and the hash computation of section

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // SHA-256 message digests (FIPS 180-4, "Secure Hash Standard", NIST 2015),
 // written from the specification. Used to record the provenance of input files;
 // digests are returned as 64 lowercase hexadecimal characters.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Wall-clock time of a phase, for the timings commands report (never for
 // tests: speed is measured by the benchmarks, docs/benchmarks.md).
 #pragma once

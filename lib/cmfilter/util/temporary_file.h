@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A file of the caller's own in the system's temporary folder, removed when
 // its TemporaryFile is destroyed: for data a library bakes for itself but
 // must hand to OpenImageIO by path (a moment pyramid that TextureSystem

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A plugin linking libcmfilter: one exported C function that loads a baked
 // table and looks up the filtered colour at (mean, sigma).
 #include "cmfilter/tables/gaussian_color_table_file.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Loads a plugin with dlopen() and calls its cmfilter_plugin_lookup.
 //   plugin_host PLUGIN.so TABLE.exr MEAN SIGMA
 #include <dlfcn.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // CIEDE2000 against the 34 published test pairs of Sharma, Wu & Dalal (2005)
 // (tests/data/ciede2000-sharma.tsv), the linear Rec.709 -> L*a*b* conversion
 // at white, black and mid grey, and the nearest-rank error summary.

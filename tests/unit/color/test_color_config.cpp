@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Colour management: the built-in OpenColorIO config decodes each transfer
 // function and primaries set to the published formulas and matrices.
 #include "cmfilter/color/color_config.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Loading colour maps from image files: gradient selection, colour-space
 // decisions, and bad input.
 #include "cmfilter/colormap/color_map_loading.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Slope colour maps (slope_color_map.h): the steepness map reads its 1-D map
 // at the slope angle in degrees, the slope-vector map lays its image over
 // [-s_max, s_max]^2 top row up, bilinear between texel centres and clamped

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The radix-2 FFT against the DFT summed term by term in long double.
 #include "cmfilter/math/fft.h"
 

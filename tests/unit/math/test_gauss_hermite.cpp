@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Gauss-Hermite rules for the standard normal (gauss_hermite.h) against the
 // normal's moments E[Z^2j] = (2j - 1)!! (exact up to degree 2n - 1) and the
 // probabilists' Hermite recurrence He_{k+1} = z He_k - k He_{k-1}, whose n-th

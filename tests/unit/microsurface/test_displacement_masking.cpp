@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Smith's masking from a textured displacement's own statistics
 // (displacement_masking.h) and the sampled slope layer that uses it
 // (displacement_slope_color.h): Lambda and the height CDF of Gaussian texels

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // DisplacementTexture against independent computations: its texel slopes and
 // pyramid against `maketx --bumpslopes --filter box` read back with
 // OpenImageIO, and against a Sobel gradient written out here; its footprint

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The random-phase cosine microsurface (gaussian_microsurface.h): its
 // exact sigma_h and direction-dependent sigma_s against statistics measured
 // over random points (slopes by central differences of the heights), its

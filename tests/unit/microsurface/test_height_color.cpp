@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The exact height-filtered colour <C_h, D_h> (height_color.h) and the
 // normal quantile under it, against independent computations: the quantile
 // against bisection on erfc; the colour of a two-node ramp map against

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The height-filtered albedo of a microsurface footprint
 // (height_filtered_albedo.h) against independent computations, none of them
 // calling the functions under test:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Smith's Lambda for Gaussian slopes (eq. 3), the mean visibility (eq. 13)
 // and the moments of the height filtering distribution (eqs. 15-18), each
 // against an independent computation: Lambda as Smith's integral

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The ray-traced heightfield (heightfield_tracer.h) against independent
 // computations: node heights from GaussianMicrosurface::height, a bilinear
 // reference built from them here, a dense march along each ray with

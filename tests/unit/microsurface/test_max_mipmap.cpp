@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The maximum mipmap (max_mipmap.h) against the brute-force maximum of the
 // nodes of each block, wrapping.
 #include "cmfilter/microsurface/max_mipmap.h"

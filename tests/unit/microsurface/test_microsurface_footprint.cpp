@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The resolved and unresolved parts of a microsurface over a footprint
 // (microsurface_footprint.h), against brute-force averages over points of the
 // parallelogram.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A microsurface material's layers (microsurface_albedo.h) stay finite and in
 // range on sweeps of everything a renderer can hand them: view and light
 // angles from 0 through 90 degrees to below the surface, any azimuths,

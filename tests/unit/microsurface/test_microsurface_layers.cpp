@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A microsurface material's layers (microsurface_albedo.h) against
 // independent computations: the combinations of sec. 6 (a weighted sum, a
 // product, absent layers) by hand; the slope layer of a footprint that

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Height-correlated colour on a Gaussian microsurface (Heitz et al. 2013,
 // sec. 5.1) at the edges of its domain: every function from Smith's Lambda to
 // the height-filtered albedo swept over view and light angles from 0 to just

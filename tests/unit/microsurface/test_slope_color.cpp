@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The slope-filtered colour <C_s, D_s> of eq. 20 (slope_color.h) against
 // independent computations: the exact D_s colour against a brute-force
 // midpoint sum of eq. 20's definition over a Cartesian grid of slopes; both

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The slope filtering distribution D_s of eq. 20 (slope_filtering.h): its
 // exact mean and covariance against a 2-D Gauss-Legendre quadrature of the
 // definition itself (the facet normal n(s), max(0, <omega_o, n>) / <z, n>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Box correlations (box_correlation.h): the closed forms for gradient, value
 // and Gabor noise, and the Monte-Carlo measurement, against brute force, the
 // regression slope of footprint means (by midpoint quadrature) on centre

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // fBm and turbulence over a base noise, their filtered mean over a footprint,
 // and the per-LOD sigma table a FilteredNoise looks up.
 #include "cmfilter/noise/filtered_noise.h"

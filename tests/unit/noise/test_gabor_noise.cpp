@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Gabor noise (Lagae et al. 2009): the analytic variance against brute-force
 // measurement over many independent samples, with a Monte-Carlo confidence
 // interval computed from the samples themselves; determinism and validation.

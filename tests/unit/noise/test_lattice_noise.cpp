@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Gradient (Perlin) and value noise: determinism per seed, zeros at the
 // lattice, documented bounds, and mean / variance against independent
 // quadrature of the ensemble formulas (docs/noise.md):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // noise-image: the noise sampled at pixel centres, written as a float EXR driver.
 #include "cmfilter/io/image_reading.h"
 #include "cmfilter/noise/noise_image.h"

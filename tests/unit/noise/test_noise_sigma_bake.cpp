@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The Monte-Carlo noise sigma table (noise_sigma_bake.h): checked against the
 // law of total variance, the analytic Gabor variance and an independent
 // brute-force measurement between table nodes; the table file round trip.

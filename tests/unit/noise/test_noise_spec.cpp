@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // NoiseSpec: text form round trips, defaults, errors that name the bad value,
 // and the noise it makes.
 #include "cmfilter/noise/noise_spec.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // apply_filter (filtered_image.h) against independent computations: the
 // reference method against brute-force box means of C0(f) for a driver whose
 // size is not a power of two; gaussian against the quadrature T(mean, sigma)

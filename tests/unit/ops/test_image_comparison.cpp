@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Comparing two images: RMSE and CIEDE2000 against values computed here from
 // the pixels the test writes (never values read back from the library), grey
 // and alpha handling, colour spaces, the heat-map ramp, and bad input.

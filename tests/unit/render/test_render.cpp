@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The renderer's pixel loop (render.h) on small scenes built in code: two
 // references with different seeds agree (the check on the reference
 // itself), results do not depend on the thread count, misses are background,

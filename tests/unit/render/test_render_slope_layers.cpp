@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Rendering microsurface planes coloured by slope (sec. 5.2) and by combined
 // layers (sec. 6), end to end from scene text: every method gives finite
 // pixels, each pixel of the plane inside the layers' colour range, shaded

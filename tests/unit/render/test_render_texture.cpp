@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Texture drivers in the renderer (filtered_texture.h, scene_materials.h,
 // render.h), on small synthetic drivers written to a scratch folder: level-0
 // lookups read the texels where they are (t grows downwards) and repeat;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The pinhole camera: its rays against the angles of the field of view, its
 // ray differentials against finite differences of neighbouring rays, and the
 // inputs Camera::create rejects.

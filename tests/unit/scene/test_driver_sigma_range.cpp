@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The largest sigma a driver gives a colour table (driver_sigma_range.h):
 // a moment pyramid's against brute-force box statistics of its driver
 // (tests/support/box_reference.h), a driver image's aligned blocks, a noise

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Geometric coverage of box pixels (pixel_coverage.h, surface_outline.h)
 // against dense sampling of each pixel with ray-surface tests written out
 // here: a sphere's silhouette, a tilted horizon, a sphere in front of a

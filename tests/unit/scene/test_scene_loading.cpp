@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Scene files (docs/scene-format.md): a full scene read to the exact values,
 // the defaults, and one test per bad input, each checking that the message
 // names the file, the JSON path of the offending value and what was expected.

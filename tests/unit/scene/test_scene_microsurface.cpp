@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Scene files with a microsurface material (material/microsurface, sec. 5.1
 // of Heitz et al. 2013): a valid one read to its exact values and defaults
 // (tile 8 longest wavelengths, 256 cosines, seed 1), and each bad input

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Scene files with a layered microsurface material (sec. 5.2 slope colour,
 // sec. 6 combinations): slope_colormap (by steepness or by slope vector),
 // base (a colour map over its own driver) and combine (a weighted sum or a

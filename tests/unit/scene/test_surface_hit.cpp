@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Ray-plane and ray-sphere hits, their texture coordinates and the ray
 // differentials transferred to them, each against an independent computation:
 // analytic hits, and central differences of the hit point and (u, v) of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Tables fitted to a scene (tolerance_tables.h): a surface's table covers
 // exactly its driver's sigma range (the largest box sigma of its noise sigma
 // table, read here from the file), meets the tolerance against the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The cosine-series rows of clamp maps (cosine_series_rows.h) against
 // brute-force quadrature (tests/support/reference_convolution.h): wherever the
 // series claims a bound below 1e-10 its rows must match to float rounding,

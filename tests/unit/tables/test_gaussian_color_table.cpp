@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The baked table: every node against brute-force quadrature, row 0 against the
 // map, the axes' geometry, bilinear lookup and its out-of-range rules.
 #include "cmfilter/tables/gaussian_color_table.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // eq. 10: the closed-form convolution against brute-force quadrature
 // (tests/support/reference_convolution.h) and against properties that hold
 // for any correct Gaussian filter.

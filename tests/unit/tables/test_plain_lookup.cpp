@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The small-sigma shortcut's threshold (plain_lookup.h), against the
 // brute-force quadrature of eq. 10 (tests/support/reference_convolution.h):
 // below the threshold C0(v) is within the bound of the exact T(v, sigma) at

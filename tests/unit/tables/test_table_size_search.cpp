@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The smallest table for a tolerance (table_size_search.h): the chosen table
 // meets the tolerance when measured independently (brute-force quadrature of
 // eq. 10, tests/support/reference_convolution.h, at fresh random points, not

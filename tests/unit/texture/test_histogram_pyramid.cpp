@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Histogram pyramids (sec. 4.1, exact solutions) against independent
 // computations: every level of the written file, read back with OpenImageIO's
 // ImageInput, against the fractions of the footprint at each value counted by

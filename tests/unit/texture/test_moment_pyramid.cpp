@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Moment pyramids (Heitz et al. 2013, sec. 4.2) against independent
 // computations: every level of the written file, read back with OpenImageIO's
 // ImageInput, against brute-force box means of the level-0 data in double

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // SHA-256 (FIPS 180-4) against the NIST example digests, and the streamed file
 // digest against the one-shot digest and the system sha256sum, across the
 // padding boundaries.
