@@ -79,7 +79,8 @@ int main(int argc, char** argv)
     std::vector<float> texels(static_cast<std::size_t>(n) * n);
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i)
-            texels[static_cast<std::size_t>(j) * n + i] = static_cast<float>(scales_height((i + 0.5) / n, (j + 0.5) / n));
+            texels[static_cast<std::size_t>(j) * n + i] =
+                static_cast<float>(scales_height((i + 0.5) / n, (j + 0.5) / n));
 
     auto out = OIIO::ImageOutput::create(path);
     OIIO::ImageSpec spec(n, n, 1, OIIO::TypeDesc::HALF);

@@ -72,8 +72,7 @@ EncodedColor keyed(const std::array<Key, N>& keys, int i)
         const Key& lo = keys[k];
         const Key& hi = keys[k + 1];
         if (t <= hi.position) {
-            return mix(lo.color, hi.color,
-                       smoothstep((t - lo.position) / (hi.position - lo.position)));
+            return mix(lo.color, hi.color, smoothstep((t - lo.position) / (hi.position - lo.position)));
         }
     }
     return keys.back().color;
@@ -152,7 +151,7 @@ EncodedColor narrow_band(int i)
     const EncodedColor dark_grey{40, 40, 40};
     const EncodedColor bright_yellow{255, 230, 40};
     const double band_centre = 0.7 * kTexelCount;  // in texels
-    const double band_half_width = 2.0;             // in texels
+    const double band_half_width = 2.0;            // in texels
     return std::fabs((i + 0.5) - band_centre) <= band_half_width ? bright_yellow : dark_grey;
 }
 
@@ -199,12 +198,12 @@ EncodedColor hue_at(double h, double saturation)
     const double x = 1.0 - std::fabs(std::fmod(sector, 2.0) - 1.0);
     EncodedColor unit{0, 0, 0};
     switch (std::min(5, static_cast<int>(sector))) {
-        case 0: unit = {1, x, 0}; break;
-        case 1: unit = {x, 1, 0}; break;
-        case 2: unit = {0, 1, x}; break;
-        case 3: unit = {0, x, 1}; break;
-        case 4: unit = {x, 0, 1}; break;
-        default: unit = {1, 0, x}; break;
+    case 0: unit = {1, x, 0}; break;
+    case 1: unit = {x, 1, 0}; break;
+    case 2: unit = {0, 1, x}; break;
+    case 3: unit = {0, x, 1}; break;
+    case 4: unit = {x, 0, 1}; break;
+    default: unit = {1, 0, x}; break;
     }
     const auto channel = [&](double c) { return 255.0 * (1.0 - saturation * (1.0 - c)); };
     return {channel(unit.r), channel(unit.g), channel(unit.b)};
@@ -231,8 +230,8 @@ EncodedColor hue_ramp(int i) { return hue_at(static_cast<double>(i) / kTexelCoun
 EncodedColor grass_rock(int i)
 {
     static const std::array<Key, 6> keys = {{
-        {0.0 / 90, {92, 148, 51}},   // grass
-        {25.0 / 90, {92, 148, 51}},  // grass
+        {0.0 / 90, {92, 148, 51}},     // grass
+        {25.0 / 90, {92, 148, 51}},    // grass
         {35.0 / 90, {140, 128, 115}},  // rock
         {60.0 / 90, {140, 128, 115}},  // rock
         {70.0 / 90, {64, 56, 51}},     // cliff
@@ -240,7 +239,6 @@ EncodedColor grass_rock(int i)
     }};
     return keyed(keys, i);
 }
-
 
 // ---------------------------------------------------------------------------
 // slope-wheel.png: a 64 x 64 slope-vector map, laid over the slope plane
@@ -271,10 +269,7 @@ ColorMapDefinition gradient(const char* file_name, EncodedColor (*texel)(int))
     return {file_name, [texel](int i, int) { return texel(i); }};
 }
 
-std::uint8_t to_code(double encoded)
-{
-    return static_cast<std::uint8_t>(std::lround(std::clamp(encoded, 0.0, 255.0)));
-}
+std::uint8_t to_code(double encoded) { return static_cast<std::uint8_t>(std::lround(std::clamp(encoded, 0.0, 255.0))); }
 
 std::vector<std::uint8_t> evaluate(const ColorMapDefinition& map)
 {
@@ -298,8 +293,8 @@ std::string write_png_atomically(const std::filesystem::path& destination, int w
                                  const std::vector<std::uint8_t>& pixels)
 {
     const std::filesystem::path temp =
-        destination.parent_path() / ("." + destination.stem().string() + ".tmp" +
-                                     std::to_string(::getpid()) + destination.extension().string());
+        destination.parent_path() /
+        ("." + destination.stem().string() + ".tmp" + std::to_string(::getpid()) + destination.extension().string());
 
     OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
     spec.attribute("oiio:ColorSpace", "sRGB");
@@ -307,8 +302,7 @@ std::string write_png_atomically(const std::filesystem::path& destination, int w
     auto output = OIIO::ImageOutput::create(temp.string());
     if (!output) return "cannot create a PNG writer for '" + temp.string() + "': " + OIIO::geterror();
     const bool written = output->open(temp.string(), spec) &&
-                         output->write_image(OIIO::TypeDesc::UINT8, pixels.data()) &&
-                         output->close();
+                         output->write_image(OIIO::TypeDesc::UINT8, pixels.data()) && output->close();
     if (!written) {
         const std::string reason = output->geterror();
         output.reset();
@@ -323,8 +317,7 @@ std::string write_png_atomically(const std::filesystem::path& destination, int w
     if (renamed) {
         std::error_code ignored;
         std::filesystem::remove(temp, ignored);
-        return "cannot rename '" + temp.string() + "' to '" + destination.string() +
-               "': " + renamed.message();
+        return "cannot rename '" + temp.string() + "' to '" + destination.string() + "': " + renamed.message();
     }
     return {};
 }
@@ -348,14 +341,20 @@ int main(int argc, char** argv)
     }
 
     const std::vector<ColorMapDefinition> maps = {
-        gradient("terrain.png", terrain),         gradient("stripes.png", stripes),
-        gradient("step.png", step),               gradient("narrow-band.png", narrow_band),
-        gradient("hue-ramp.png", hue_ramp),       gradient("sand-snow.png", sand_snow),
-        gradient("grass-rock.png", grass_rock),   {"slope-wheel.png", slope_wheel, kWheelSide, kWheelSide},
-        gradient("snake-green.png", snake_green), gradient("snake-rims.png", snake_rims),
+        gradient("terrain.png", terrain),
+        gradient("stripes.png", stripes),
+        gradient("step.png", step),
+        gradient("narrow-band.png", narrow_band),
+        gradient("hue-ramp.png", hue_ramp),
+        gradient("sand-snow.png", sand_snow),
+        gradient("grass-rock.png", grass_rock),
+        {"slope-wheel.png", slope_wheel, kWheelSide, kWheelSide},
+        gradient("snake-green.png", snake_green),
+        gradient("snake-rims.png", snake_rims),
     };
     for (const ColorMapDefinition& map : maps) {
-        const std::string error = write_png_atomically(output_directory / map.file_name, map.width, map.height, evaluate(map));
+        const std::string error =
+            write_png_atomically(output_directory / map.file_name, map.width, map.height, evaluate(map));
         if (!error.empty()) {
             std::cerr << "cmfilter-make-luts: " << error << "\n";
             return 2;

@@ -74,8 +74,7 @@ Status run(ApplyArgs args)
         return image.error();
     }
     if (auto st = write_filtered_image(args.output, *image, *config); !st) return st;
-    const double total_ms =
-        t0.elapsed_ms();
+    const double total_ms = t0.elapsed_ms();
     for (std::string& w : image->warnings) {
         w = name_flags(w, apply_flags());
         std::cerr << "cmfilter apply: warning: " << w << "\n";
@@ -108,19 +107,18 @@ Status run(ApplyArgs args)
         j["time_ms"] = total_ms;
         std::cout << j.dump(2) << "\n";
     } else if (!args.quiet) {
-        std::cout << std::setprecision(6) << "wrote " << args.output << ": " << to_string(r.method)
-                  << ", " << r.width << " x " << r.height << " at lod " << r.lod;
+        std::cout << std::setprecision(6) << "wrote " << args.output << ": " << to_string(r.method) << ", " << r.width
+                  << " x " << r.height << " at lod " << r.lod;
         if (r.lod_clamped) std::cout << " (asked " << r.lod_requested << ")";
-        std::cout << "\n  moments    " << r.moments_path << " (" << r.moments.width << " x "
-                  << r.moments.height << ", levels 0.." << r.top_level << " reachable)\n"
+        std::cout << "\n  moments    " << r.moments_path << " (" << r.moments.width << " x " << r.moments.height
+                  << ", levels 0.." << r.top_level << " reachable)\n"
                   << "  table      " << r.table_path << "\n";
         if (!r.map_path.empty()) std::cout << "  map        " << r.map_path << "\n";
         if (!r.driver_path.empty()) std::cout << "  driver     " << r.driver_path << "\n";
         if (!r.histograms_path.empty()) std::cout << "  histograms " << r.histograms_path << "\n";
         if (r.method == FilterMethod::Gaussian)
             std::cout << "  lookups    " << r.table_counters.lookups << ", sigma clamped "
-                      << r.table_counters.sigma_clamped << ", value clamped "
-                      << r.table_counters.value_clamped << "\n";
+                      << r.table_counters.sigma_clamped << ", value clamped " << r.table_counters.value_clamped << "\n";
         if (r.texels_outside_domain > 0)
             std::cout << "  outside    " << r.texels_outside_domain << " driver texels ("
                       << 100 * r.fraction_outside_domain << "%) outside the table's domain\n";
@@ -134,18 +132,16 @@ Status run(ApplyArgs args)
 Command setup_apply(CLI::App& parent)
 {
     auto args = std::make_shared<ApplyArgs>();
-    CLI::App* app = parent.add_subcommand(
-        "apply", "Filtered colour image of a colour-mapped driver at a level of detail "
-                 "(naive, gaussian eq. 10, exact sec. 4.1, reference)");
-    app->add_option("--moments", args->options.moments_path, "Moment pyramid of the driver (bake-moments)")
-        ->required();
+    CLI::App* app = parent.add_subcommand("apply",
+                                          "Filtered colour image of a colour-mapped driver at a level of detail "
+                                          "(naive, gaussian eq. 10, exact sec. 4.1, reference)");
+    app->add_option("--moments", args->options.moments_path, "Moment pyramid of the driver (bake-moments)")->required();
     app->add_option("--table", args->options.table_path, "Gaussian colour table (bake-colormap)")->required();
     app->add_option("--lod", args->options.lod,
                     "Level of detail: log2 of the footprint width in level-0 texels; fractional "
                     "values blend two levels")
         ->required();
-    app->add_option("-o,--output", args->output,
-                    "Image to write: .exr (scene-linear float) or .png/.jpg (sRGB, 8-bit)")
+    app->add_option("-o,--output", args->output, "Image to write: .exr (scene-linear float) or .png/.jpg (sRGB, 8-bit)")
         ->required();
     app->add_option("--method", args->method, "naive, gaussian, exact or reference")->capture_default_str();
     app->add_option("--size", args->size, "Output size WxH (default: the size of level floor(lod))");

@@ -120,10 +120,10 @@ Status run(const BakeColormapArgs& args)
         grid << "values " << search_options.value_counts.front() << ".." << search_options.value_counts.back()
              << " x sigmas " << search_options.sigma_counts.front() << ".." << search_options.sigma_counts.back()
              << " (powers of two and 1.5x between), sqrt and linear spacing; " << search->trials.size()
-             << " candidates measured at " << search_options.search_samples << " points (seed " << args.seed
-             << "), " << search->rejected << " rejected at verification (seed " << args.seed + 1 << ")";
-        info.tolerance = TableToleranceRecord{*args.tolerance, quantile_name(search_options.quantile),
-                                              search->error, search_options.verify_samples, grid.str()};
+             << " candidates measured at " << search_options.search_samples << " points (seed " << args.seed << "), "
+             << search->rejected << " rejected at verification (seed " << args.seed + 1 << ")";
+        info.tolerance = TableToleranceRecord{*args.tolerance, quantile_name(search_options.quantile), search->error,
+                                              search_options.verify_samples, grid.str()};
     } else {
         GaussianColorTableOptions options;
         options.values = args.values;
@@ -200,34 +200,31 @@ Status run(const BakeColormapArgs& args)
         }
         std::cout << j.dump(2) << "\n";
     } else if (!args.quiet) {
-        std::cout << "wrote " << args.output << ": gaussian colour table, " << ax.values
-                  << " values x " << ax.sigmas << " sigmas\n"
+        std::cout << "wrote " << args.output << ": gaussian colour table, " << ax.values << " values x " << ax.sigmas
+                  << " sigmas\n"
                   << "  map      " << info.source.path << " (" << info.source.image_width << " x "
-                  << info.source.image_height << ", " << info.source.selection << "), "
-                  << info.source.colorspace << " -> " << info.source.linear_space << " ("
-                  << info.source.colorspace_rule << ")\n"
-                  << "  values   domain [" << ax.vmin << ", " << ax.vmax << "], wrap "
-                  << to_string(ax.wrap) << ", axis [" << ax.value_first() << ", "
-                  << ax.value_last() << "]\n"
+                  << info.source.image_height << ", " << info.source.selection << "), " << info.source.colorspace
+                  << " -> " << info.source.linear_space << " (" << info.source.colorspace_rule << ")\n"
+                  << "  values   domain [" << ax.vmin << ", " << ax.vmax << "], wrap " << to_string(ax.wrap)
+                  << ", axis [" << ax.value_first() << ", " << ax.value_last() << "]\n"
                   << "  sigmas   0 .. " << ax.sigma_max << ", " << to_string(ax.spacing)
                   << " spacing; sigma_max: " << info.sigma_max_source << "\n";
         if (search)
             std::cout << std::setprecision(3) << "  size     chose " << ax.values << " values x " << ax.sigmas
                       << " sigmas (" << to_string(ax.spacing) << "): " << table_bytes << " bytes, "
                       << 100.0 * static_cast<double>(table_bytes) / static_cast<double>(default_bytes)
-                      << "% of the default " << defaults.values << " x " << defaults.sigmas << " ("
-                      << default_bytes << " bytes)\n"
-                      << "  tolerance CIEDE2000 " << info.tolerance->statistic << " <= "
-                      << info.tolerance->tolerance << ": reached " << search->error << " at "
-                      << info.tolerance->samples << " random (v, sigma) (" << search->search_error
-                      << " at the search points); " << search->trials.size() << " candidates measured, "
-                      << search->rejected << " rejected at verification\n";
+                      << "% of the default " << defaults.values << " x " << defaults.sigmas << " (" << default_bytes
+                      << " bytes)\n"
+                      << "  tolerance CIEDE2000 " << info.tolerance->statistic << " <= " << info.tolerance->tolerance
+                      << ": reached " << search->error << " at " << info.tolerance->samples << " random (v, sigma) ("
+                      << search->search_error << " at the search points); " << search->trials.size()
+                      << " candidates measured, " << search->rejected << " rejected at verification\n";
         if (info.lookup_error)
-            std::cout << std::setprecision(3) << "  lookup   CIEDE2000 mean " << info.lookup_error->mean
-                      << ", p95 " << info.lookup_error->p95 << ", max " << info.lookup_error->max
-                      << " over " << info.lookup_error_samples << " random (v, sigma)\n";
-        std::cout << std::fixed << std::setprecision(1) << "  time     "
-                  << (search ? "search and bake " : "bake ") << bake_ms << " ms\n";
+            std::cout << std::setprecision(3) << "  lookup   CIEDE2000 mean " << info.lookup_error->mean << ", p95 "
+                      << info.lookup_error->p95 << ", max " << info.lookup_error->max << " over "
+                      << info.lookup_error_samples << " random (v, sigma)\n";
+        std::cout << std::fixed << std::setprecision(1) << "  time     " << (search ? "search and bake " : "bake ")
+                  << bake_ms << " ms\n";
     }
     return ok();
 }
@@ -238,15 +235,13 @@ Command setup_bake_colormap(CLI::App& parent)
 {
     auto args = std::make_shared<BakeColormapArgs>();
     CLI::App* app = parent.add_subcommand(
-        "bake-colormap",
-        "Bake the prefiltered colour-map table T(v, sigma) = (C0 * N(0, sigma^2))(v) (eq. 10)");
+        "bake-colormap", "Bake the prefiltered colour-map table T(v, sigma) = (C0 * N(0, sigma^2))(v) (eq. 10)");
     app->add_option("MAP_IMAGE", args->map_path,
                     "Colour map: any image OpenImageIO reads (W x 1, 1 x H, or pick --row/--column)")
         ->required();
     app->add_option("-o,--output", args->output, "Table to write (.exr)")->required();
     auto* row = app->add_option("--row", args->row, "Use this row of a taller image as the gradient");
-    app->add_option("--column", args->column, "Use this column as the gradient (top = vmin)")
-        ->excludes(row);
+    app->add_option("--column", args->column, "Use this column as the gradient (top = vmin)")->excludes(row);
     app->add_option("--colorspace", args->colorspace,
                     "Colour space of the map image (default: the file's metadata, else sRGB for "
                     "integer and linear for float files)");
@@ -254,8 +249,7 @@ Command setup_bake_colormap(CLI::App& parent)
                     "OpenColorIO config (default: $OCIO if set, else the built-in config)");
     app->add_option("--domain", args->domain, "Driver domain the map spans, MIN:MAX (use --domain=-1:1 for negatives)")
         ->capture_default_str();
-    app->add_option("--wrap", args->wrap, "Map beyond the domain: clamp, repeat or mirror")
-        ->capture_default_str();
+    app->add_option("--wrap", args->wrap, "Map beyond the domain: clamp, repeat or mirror")->capture_default_str();
     auto* sigma_max = app->add_option("--sigma-max", args->sigma_max,
                                       "Largest sigma in the table (default: a quarter of the domain width)");
     app->add_option("--for", args->for_path,

@@ -55,8 +55,7 @@ Status run(const BakeMomentsArgs& args)
     options.nonfinite = *nan;
     options.threads = args.threads;
     const bool progress = !args.quiet && !args.json && isatty(STDERR_FILENO);
-    if (progress)
-        options.progress = terminal_progress("bake-moments");
+    if (progress) options.progress = terminal_progress("bake-moments");
     const Stopwatch t0;
     // The histogram pyramid first: it is the one refused for a driver with
     // too many distinct values, and then neither file is written.
@@ -75,8 +74,7 @@ Status run(const BakeMomentsArgs& args)
         if (histograms) std::remove(args.histograms.c_str());  // all or nothing
         return baked.error();
     }
-    const double total_ms =
-        t0.elapsed_ms();
+    const double total_ms = t0.elapsed_ms();
     const MomentPyramidInfo& info = baked->info;
 
     if (args.json) {
@@ -93,25 +91,23 @@ Status run(const BakeMomentsArgs& args)
         j["source"] = info.source;
         j["source_sha256"] = info.source_sha256;
         if (histograms) j["histograms"] = {{"output", args.histograms}, {"values", histograms->values}};
-        j["time_ms"] = {{"read", baked->read_ms}, {"build", baked->build_ms},
-                        {"write", baked->write_ms}, {"total", total_ms}};
+        j["time_ms"] = {
+            {"read", baked->read_ms}, {"build", baked->build_ms}, {"write", baked->write_ms}, {"total", total_ms}};
         std::cout << j.dump(2) << "\n";
     } else if (!args.quiet) {
-        std::cout << std::setprecision(9) << "wrote " << args.output << ": moment pyramid, "
-                  << info.width << " x " << info.height << ", " << info.levels << " levels\n"
-                  << "  driver     " << info.source << " (channel " << info.channel << ", "
-                  << info.source_pixel_type << "), range [" << info.driver_min << ", "
-                  << info.driver_max << "]\n"
-                  << "  reference  c = " << info.reference
-                  << " (channels: mean of f - c, mean of (f - c)^2)\n"
+        std::cout << std::setprecision(9) << "wrote " << args.output << ": moment pyramid, " << info.width << " x "
+                  << info.height << ", " << info.levels << " levels\n"
+                  << "  driver     " << info.source << " (channel " << info.channel << ", " << info.source_pixel_type
+                  << "), range [" << info.driver_min << ", " << info.driver_max << "]\n"
+                  << "  reference  c = " << info.reference << " (channels: mean of f - c, mean of (f - c)^2)\n"
                   << "  wrap       " << to_string(info.wrap) << "\n";
         if (histograms)
             std::cout << "  histograms " << args.histograms << ": " << histograms->values.size()
                       << " distinct values (exact method)\n";
         if (info.nonfinite_replaced > 0)
             std::cout << "  non-finite " << info.nonfinite_replaced << " texels replaced by 0\n";
-        std::cout << std::setprecision(3) << "  time       read " << baked->read_ms << " ms, build "
-                  << baked->build_ms << " ms, write " << baked->write_ms << " ms\n";
+        std::cout << std::setprecision(3) << "  time       read " << baked->read_ms << " ms, build " << baked->build_ms
+                  << " ms, write " << baked->write_ms << " ms\n";
     }
     return ok();
 }
@@ -122,8 +118,7 @@ Command setup_bake_moments(CLI::App& parent)
 {
     auto args = std::make_shared<BakeMomentsArgs>();
     CLI::App* app = parent.add_subcommand(
-        "bake-moments",
-        "Bake a driver's moment pyramid: per MIP level the box means of f and f^2 (sec. 4.2)");
+        "bake-moments", "Bake a driver's moment pyramid: per MIP level the box means of f and f^2 (sec. 4.2)");
     app->add_option("DRIVER", args->driver_path,
                     "Driver texture: any image OpenImageIO reads, used as data (no colour conversion)")
         ->required();
@@ -133,10 +128,8 @@ Command setup_bake_moments(CLI::App& parent)
                     "(at most 256 distinct values)");
     app->add_option("--channel", args->channel,
                     "Driver channel, by name or 0-based index (required for multi-channel images)");
-    app->add_option("--wrap", args->wrap, "Lookups beyond the edges: black, clamp or periodic")
-        ->capture_default_str();
-    app->add_option("--nan", args->nan,
-                    "NaN/Inf texels: error (refuse the driver) or zero (replace by 0 and count)")
+    app->add_option("--wrap", args->wrap, "Lookups beyond the edges: black, clamp or periodic")->capture_default_str();
+    app->add_option("--nan", args->nan, "NaN/Inf texels: error (refuse the driver) or zero (replace by 0 and count)")
         ->capture_default_str();
     app->add_option("--threads", args->threads, "Threads (0: all cores)")->capture_default_str();
     app->add_flag("--json", args->json, "Print a machine-readable summary on stdout");

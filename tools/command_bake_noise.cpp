@@ -39,8 +39,8 @@ struct BakeNoiseArgs {
 
 nlohmann::json estimate_json(const SigmaEstimate& e)
 {
-    return {{"sigma", e.sigma}, {"ci", e.half_width}, {"footprints", e.footprints},
-            {"samples", e.samples_per_footprint}};
+    return {
+        {"sigma", e.sigma}, {"ci", e.half_width}, {"footprints", e.footprints}, {"samples", e.samples_per_footprint}};
 }
 
 Status run(const BakeNoiseArgs& args)
@@ -64,8 +64,7 @@ Status run(const BakeNoiseArgs& args)
     options.max_footprints = args.max_footprints;
     options.threads = args.threads;
     const bool progress = !args.quiet && !args.json && isatty(STDERR_FILENO);
-    if (progress)
-        options.progress = terminal_progress("bake-noise");
+    if (progress) options.progress = terminal_progress("bake-noise");
     const Stopwatch t0;
     auto bake = bake_noise_sigma(*noise, options);
     if (!bake) return bake.error();
@@ -88,10 +87,14 @@ Status run(const BakeNoiseArgs& args)
         j["base_period"] = noise->base_period();
         j["lod_first"] = bake->lod_first;
         j["lod_step"] = bake->lod_step;
-        j["global"] = {{"samples", g.samples}, {"mean", g.mean}, {"sigma", g.sigma},
-                       {"skewness", g.skewness}, {"excess_kurtosis", g.excess_kurtosis}};
+        j["global"] = {{"samples", g.samples},
+                       {"mean", g.mean},
+                       {"sigma", g.sigma},
+                       {"skewness", g.skewness},
+                       {"excess_kurtosis", g.excess_kurtosis}};
         for (const auto& r : bake->rows)
-            j["lods"].push_back({{"lod", r.lod}, {"box", estimate_json(r.box)}, {"gaussian", estimate_json(r.gaussian)}});
+            j["lods"].push_back(
+                {{"lod", r.lod}, {"box", estimate_json(r.box)}, {"gaussian", estimate_json(r.gaussian)}});
         j["time_ms"] = total_ms;
         std::cout << j.dump(2) << "\n";
     } else if (!args.quiet) {
@@ -99,9 +102,8 @@ Status run(const BakeNoiseArgs& args)
         for (const auto& r : bake->rows)
             for (const SigmaEstimate* e : {&r.box, &r.gaussian})
                 if (e->sigma > 0) worst = std::max(worst, e->half_width / e->sigma);
-        std::cout << std::setprecision(6) << "wrote " << args.output << ": noise sigma table, "
-                  << bake->rows.size() << " LODs from " << bake->lod_first << " in steps of " << bake->lod_step
-                  << "\n"
+        std::cout << std::setprecision(6) << "wrote " << args.output << ": noise sigma table, " << bake->rows.size()
+                  << " LODs from " << bake->lod_first << " in steps of " << bake->lod_step << "\n"
                   << "  noise   " << spec_text << " (base period " << noise->base_period() << ")\n"
                   << "  global  mean " << g.mean << ", sigma " << g.sigma << ", skewness " << g.skewness
                   << ", excess kurtosis " << g.excess_kurtosis << " (" << g.samples << " samples)\n"

@@ -117,13 +117,13 @@ Status run(const BenchArgs& args)
 Command setup_bench(CLI::App& parent)
 {
     auto args = std::make_shared<BenchArgs>();
-    CLI::App* app = parent.add_subcommand("bench", "Time every render method on scenes and measure its error against a reference");
+    CLI::App* app =
+        parent.add_subcommand("bench", "Time every render method on scenes and measure its error against a reference");
     app->add_option("scenes", args->scenes, "Scene files (JSON, docs/scene-format.md)")->required();
     app->add_option("--csv", args->csv, "CSV to write: one row per scene and configuration")->required();
     app->add_option("--charts", args->charts, "Folder for one chart per scene (SCENE.png; needs gnuplot)");
     app->add_option("--resolution", args->resolution, "Render every scene at WxH instead of its own resolution");
-    app->add_option("--reference-spp", args->reference_samples,
-                    "Rays per pixel of each reference round (>= 1024)")
+    app->add_option("--reference-spp", args->reference_samples, "Rays per pixel of each reference round (>= 1024)")
         ->capture_default_str();
     app->add_option("--reference-repeat", args->reference_repeat,
                     "Mean CIEDE2000 two references with other seeds may differ by; both grow by --reference-spp "

@@ -33,18 +33,18 @@ nlohmann::json image_json(const ComparedImage& image)
 
 void print_table(const ImageComparison& c)
 {
-    std::cout << "compared " << c.a.path << " and " << c.b.path << ": " << c.width << " x "
-              << c.height << ", " << c.pixels << " pixels, R G B in " << c.linear_space << "\n";
+    std::cout << "compared " << c.a.path << " and " << c.b.path << ": " << c.width << " x " << c.height << ", "
+              << c.pixels << " pixels, R G B in " << c.linear_space << "\n";
     for (const ComparedImage* image : {&c.a, &c.b})
-        std::cout << "  " << (image == &c.a ? "A" : "B") << "  " << image->path << ": "
-                  << image->channels << " channels " << image->pixel_type << ", "
-                  << image->colorspace << " (" << image->colorspace_rule << ")\n";
+        std::cout << "  " << (image == &c.a ? "A" : "B") << "  " << image->path << ": " << image->channels
+                  << " channels " << image->pixel_type << ", " << image->colorspace << " (" << image->colorspace_rule
+                  << ")\n";
     const auto row = [](const char* name, double value) {
-        std::cout << "  " << std::left << std::setw(16) << name << std::right << std::setw(12)
-                  << std::setprecision(6) << value << "\n";
+        std::cout << "  " << std::left << std::setw(16) << name << std::right << std::setw(12) << std::setprecision(6)
+                  << value << "\n";
     };
-    std::cout << "  " << std::left << std::setw(16) << "metric" << std::right << std::setw(12)
-              << "value" << "\n";
+    std::cout << "  " << std::left << std::setw(16) << "metric" << std::right << std::setw(12) << "value"
+              << "\n";
     row("RMSE", c.rmse);
     row("RMSE R", c.rmse_rgb[0]);
     row("RMSE G", c.rmse_rgb[1]);
@@ -53,9 +53,8 @@ void print_table(const ImageComparison& c)
     row("dE2000 p95", c.de2000.p95);
     row("dE2000 max", c.de2000.max);
     if (!c.heatmap_path.empty())
-        std::cout << "wrote " << c.heatmap_path << ": CIEDE2000 heat map, 0 black, "
-                  << c.heatmap_max / 3 << " red, " << 2 * c.heatmap_max / 3 << " yellow, >= "
-                  << c.heatmap_max << " white\n";
+        std::cout << "wrote " << c.heatmap_path << ": CIEDE2000 heat map, 0 black, " << c.heatmap_max / 3 << " red, "
+                  << 2 * c.heatmap_max / 3 << " yellow, >= " << c.heatmap_max << " white\n";
 }
 
 Status run(const CompareArgs& args)
@@ -78,8 +77,7 @@ Status run(const CompareArgs& args)
         j["rmse_rgb"] = c->rmse_rgb;
         j["ciede2000"] = {{"mean", c->de2000.mean}, {"p95", c->de2000.p95}, {"max", c->de2000.max}};
         j["heatmap"] = nullptr;
-        if (!c->heatmap_path.empty())
-            j["heatmap"] = {{"path", c->heatmap_path}, {"max", c->heatmap_max}};
+        if (!c->heatmap_path.empty()) j["heatmap"] = {{"path", c->heatmap_path}, {"max", c->heatmap_max}};
         std::cout << j.dump(2) << "\n";
     } else if (!args.quiet) {
         print_table(*c);
@@ -92,8 +90,8 @@ Status run(const CompareArgs& args)
 Command setup_compare(CLI::App& parent)
 {
     auto args = std::make_shared<CompareArgs>();
-    CLI::App* app = parent.add_subcommand(
-        "compare", "RMSE and CIEDE2000 (mean, p95, max) between two images, with a heat map");
+    CLI::App* app =
+        parent.add_subcommand("compare", "RMSE and CIEDE2000 (mean, p95, max) between two images, with a heat map");
     app->add_option("A", args->options.path_a, "First image: any image OpenImageIO reads")->required();
     app->add_option("B", args->options.path_b, "Second image, the same size as A")->required();
     app->add_option("--colorspace-a", args->options.colorspace_a,
@@ -102,9 +100,8 @@ Command setup_compare(CLI::App& parent)
     app->add_option("--colorspace-b", args->options.colorspace_b, "Colour space of B (default: as for A)");
     app->add_option("--ocio-config", args->ocio_config,
                     "OpenColorIO config (default: $OCIO if set, else the built-in config)");
-    auto* heatmap = app->add_option(
-        "--heatmap", args->options.heatmap_path,
-        "Write the per-pixel CIEDE2000 as an 8-bit sRGB PNG (black, red, yellow, white)");
+    auto* heatmap = app->add_option("--heatmap", args->options.heatmap_path,
+                                    "Write the per-pixel CIEDE2000 as an 8-bit sRGB PNG (black, red, yellow, white)");
     app->add_option("--heatmap-max", args->options.heatmap_max,
                     "CIEDE2000 drawn as white in the heat map; larger errors saturate")
         ->capture_default_str()

@@ -34,9 +34,8 @@ Status run(const InfoArgs& args)
         std::cout << j.dump(2) << "\n";
         return ok();
     }
-    std::cout << info->path << ": " << info->kind << "\n  " << info->description << "\n  "
-              << info->format << ", " << info->width << " x " << info->height << ", "
-              << info->channels << " channels\n";
+    std::cout << info->path << ": " << info->kind << "\n  " << info->description << "\n  " << info->format << ", "
+              << info->width << " x " << info->height << ", " << info->channels << " channels\n";
     std::size_t width = 0;
     for (const auto& kv : info->parameters) width = std::max(width, kv.first.size());
     for (const auto& [key, value] : info->parameters)
@@ -49,8 +48,8 @@ Status run(const InfoArgs& args)
 Command setup_info(CLI::App& parent)
 {
     auto args = std::make_shared<InfoArgs>();
-    CLI::App* app = parent.add_subcommand(
-        "info", "Print what a cmfilter artefact is and every parameter it was baked with");
+    CLI::App* app =
+        parent.add_subcommand("info", "Print what a cmfilter artefact is and every parameter it was baked with");
     app->add_option("FILE", args->path, "A file written by cmfilter")->required();
     app->add_flag("--json", args->json, "Print the same as JSON");
     return {app, [args] { return run(*args); }, {}};

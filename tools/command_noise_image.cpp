@@ -34,8 +34,7 @@ Status run(const NoiseImageArgs& args)
     auto size = parse_size("--size", args.size);
     if (!size) return size.error();
     if (!(args.scale > 0) || !std::isfinite(args.scale))
-        return bad_input("--scale " + std::to_string(args.scale) +
-                         " is invalid (expected a finite value > 0)");
+        return bad_input("--scale " + std::to_string(args.scale) + " is invalid (expected a finite value > 0)");
     NoiseImageOptions options;
     options.spec = *spec;
     options.width = size->first;
@@ -53,8 +52,8 @@ Status run(const NoiseImageArgs& args)
         j["noise"] = to_string(options.spec);
         std::cout << j.dump(2) << "\n";
     } else if (!args.quiet) {
-        std::cout << "wrote " << args.output << ": noise image, " << options.width << " x "
-                  << options.height << ", " << options.scale << " noise units per pixel\n"
+        std::cout << "wrote " << args.output << ": noise image, " << options.width << " x " << options.height << ", "
+                  << options.scale << " noise units per pixel\n"
                   << "  noise " << to_string(options.spec) << "\n";
     }
     return ok();
@@ -67,8 +66,7 @@ Command setup_noise_image(CLI::App& parent)
     auto args = std::make_shared<NoiseImageArgs>();
     CLI::App* app = parent.add_subcommand(
         "noise-image", "Sample a procedural noise at pixel centres into a float EXR driver (channel Y)");
-    app->add_option("--noise", args->noise,
-                    "Noise spec, e.g. fbm:base=gradient,octaves=6,seed=1 (docs/noise.md)")
+    app->add_option("--noise", args->noise, "Noise spec, e.g. fbm:base=gradient,octaves=6,seed=1 (docs/noise.md)")
         ->required();
     app->add_option("--size", args->size, "Image size WxH")->required();
     app->add_option("--scale", args->scale, "Noise units per pixel")->capture_default_str();

@@ -62,10 +62,10 @@ std::string describe_table(std::size_t surface, const ColorLayer& m)
     const std::size_t bytes = m.table.data().size() * sizeof(float);
     const std::size_t default_bytes = TableSize{defaults.values, defaults.sigmas, defaults.spacing}.bytes();
     std::ostringstream s;
-    s << "surface " << surface << ": " << ax.values << " x " << ax.sigmas << " " << to_string(ax.spacing)
-      << " table, " << bytes << " bytes (" << std::setprecision(3)
-      << 100.0 * static_cast<double>(bytes) / static_cast<double>(default_bytes) << "% of "
-      << defaults.values << " x " << defaults.sigmas << ")";
+    s << "surface " << surface << ": " << ax.values << " x " << ax.sigmas << " " << to_string(ax.spacing) << " table, "
+      << bytes << " bytes (" << std::setprecision(3)
+      << 100.0 * static_cast<double>(bytes) / static_cast<double>(default_bytes) << "% of " << defaults.values << " x "
+      << defaults.sigmas << ")";
     if (m.fit.tolerance > 0)
         s << ", lookup CIEDE2000 " << m.fit.statistic << " " << m.fit.error << " <= " << m.fit.tolerance
           << " over sigma [0, " << m.fit.sigma_max << "]";
@@ -79,15 +79,15 @@ std::string describe_table(std::size_t surface, const ColorLayer& m)
 nlohmann::json table_json(const ColorLayer& m)
 {
     const TableAxes& ax = m.table.axes();
-    nlohmann::json j = {{"values", ax.values},
-                        {"sigmas", ax.sigmas},
-                        {"spacing", to_string(ax.spacing)},
-                        {"sigma_max", ax.sigma_max},
-                        {"bytes", m.table.data().size() * sizeof(float)},
-                        {"plain_bound", m.fit.plain_bound},
-                        {"plain_sigma", {{"smallest", m.plain.smallest()},
-                                         {"median", m.plain.median()},
-                                         {"largest", m.plain.largest()}}}};
+    nlohmann::json j = {
+        {"values", ax.values},
+        {"sigmas", ax.sigmas},
+        {"spacing", to_string(ax.spacing)},
+        {"sigma_max", ax.sigma_max},
+        {"bytes", m.table.data().size() * sizeof(float)},
+        {"plain_bound", m.fit.plain_bound},
+        {"plain_sigma",
+         {{"smallest", m.plain.smallest()}, {"median", m.plain.median()}, {"largest", m.plain.largest()}}}};
     if (m.fit.tolerance > 0)
         j["tolerance"] = {{"de2000", m.fit.tolerance},
                           {"statistic", m.fit.statistic},
@@ -147,8 +147,8 @@ Status run(const RenderArgs& args)
     if (auto st = check_probes(args.probes); !st) return st;
     options.max_probes = args.probes;
     options.edge_coverage = !args.no_edge_coverage;
-    options.masking =
-        args.masking == "correlated" ? MaskingShadowing::DirectionCorrelated : MaskingShadowing::Uncorrelated;
+    options.masking = args.masking == "correlated" ? MaskingShadowing::DirectionCorrelated
+                                                   : MaskingShadowing::Uncorrelated;
     options.slope_shading = args.slope_shading == "correlated" ? SlopeShading::Correlated : SlopeShading::Uncorrelated;
     if (talk && isatty(STDERR_FILENO)) options.progress = terminal_progress("render");
     auto image = render(*scene, *materials, options);
@@ -162,8 +162,8 @@ Status run(const RenderArgs& args)
               {"cmfilter:footprint", to_string(options.footprint)}};
     a.numbers = {{"cmfilter:samples", static_cast<double>(image->samples)},
                  {"cmfilter:seed", static_cast<double>(args.seed)}};
-    if (auto st = write_rgb_image(args.output, image->width, image->height, 3, image->rgb, config->scene_linear_name(), a,
-                                  *config);
+    if (auto st = write_rgb_image(args.output, image->width, image->height, 3, image->rgb, config->scene_linear_name(),
+                                  a, *config);
         !st)
         return st;
     if (!args.aov.empty()) {
@@ -228,7 +228,10 @@ Command setup_render(CLI::App& parent)
     CLI::App* app = parent.add_subcommand("render", "Render a scene with colour-mapped surfaces, filtered per pixel");
     app->add_option("scene", args->scene, "Scene file (JSON, docs/scene-format.md)")->required();
     app->add_option("-o,--output", args->output, "Image to write (.exr scene-linear, .png/.jpg sRGB)")->required();
-    app->add_option("--method", args->method, "naive, gaussian, gaussian-exact (microsurfaces: D_h's exact moments), exact (microsurfaces, or texture drivers with at most 256 values), supersample or reference")->capture_default_str();
+    app->add_option(
+           "--method", args->method,
+           "naive, gaussian, gaussian-exact (microsurfaces: D_h's exact moments), exact (microsurfaces, or texture drivers with at most 256 values), supersample or reference")
+        ->capture_default_str();
     app->add_option("--spp", args->samples, "Rays per pixel for supersample (reference: at least 1024)")
         ->capture_default_str();
     app->add_option("--seed", args->seed, "Seed of the sub-pixel samples")->capture_default_str();

@@ -19,10 +19,10 @@ int main(int argc, char** argv)
     app.footer("Exit codes: 0 ok, 1 usage, 2 I/O, 3 bad input, 4 runtime error.\n"
                "Run 'cmfilter <command> --help' for a command's options.");
 
-    std::vector<cli::Command> commands = {cli::setup_bake_colormap(app), cli::setup_bake_moments(app),
-                                          cli::setup_apply(app), cli::setup_compare(app),
-                                          cli::setup_info(app), cli::setup_noise_image(app),
-                                          cli::setup_bake_noise(app), cli::setup_render(app), cli::setup_bench(app)};
+    std::vector<cli::Command> commands = {
+        cli::setup_bake_colormap(app), cli::setup_bake_moments(app), cli::setup_apply(app),
+        cli::setup_compare(app),       cli::setup_info(app),         cli::setup_noise_image(app),
+        cli::setup_bake_noise(app),    cli::setup_render(app),       cli::setup_bench(app)};
 
     auto prefix = [&]() {
         std::string p = "cmfilter";

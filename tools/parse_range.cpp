@@ -26,8 +26,7 @@ Expected<std::pair<double, double>> parse_range(const std::string& option, const
     if (colon == std::string::npos || !parse_number(text.substr(0, colon), a) ||
         !parse_number(text.substr(colon + 1), b))
         return bad_input(option + " '" + text + "' is not a range (expected two finite numbers, MIN:MAX)");
-    if (!(a < b))
-        return bad_input(option + " '" + text + "' is empty (expected MIN < MAX)");
+    if (!(a < b)) return bad_input(option + " '" + text + "' is empty (expected MIN < MAX)");
     return std::make_pair(a, b);
 }
 

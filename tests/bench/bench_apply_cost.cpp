@@ -44,8 +44,8 @@ using namespace cmfilter_bench;
 namespace {
 
 const char* kMaps[] = {"terrain", "stripes", "step", "narrow-band", "hue-ramp"};
-constexpr int kSize = 1024;          // level width and height
-constexpr int kPixels = 1 << 22;     // lookups per run
+constexpr int kSize = 1024;       // level width and height
+constexpr int kPixels = 1 << 22;  // lookups per run
 constexpr int kRuns = 7;
 
 // Bilinear fetch of C interleaved float channels at (s, t) in texel units, clamped.
@@ -105,14 +105,17 @@ int through_moment_texture(const std::string& luts, const ColorConfig& config, c
         };
         double sink = 0;
         LookupCounters counters;
-        const auto [naive, gaussian] = fastest_pair_ms(kRuns, [&] {
+        const auto [naive, gaussian] = fastest_pair_ms(
+            kRuns,
+            [&] {
             double acc = 0;
             for (int i = 0; i < kLookups; ++i) {
                 const MomentSample m = texture->lookup(coordinate(i, 0), coordinate(i, 1), 0.0f);
                 acc += map->map.evaluate(m.mean).g;
             }
             sink += acc;
-        }, [&] {
+            },
+            [&] {
             double acc = 0;
             for (int i = 0; i < kLookups; ++i) {
                 const MomentSample m = texture->lookup(coordinate(i, 0), coordinate(i, 1), 0.0f);
@@ -164,7 +167,8 @@ int main(int argc, char** argv)
     }
 
     std::cout << "Machine: " << cpu_name() << ", one thread. " << kPixels << "  lookups per run in scanline order"
-              << " over a smooth " << kSize << " x " << kSize << " level; fastest of " << kRuns << " alternating runs each.\n\n"
+              << " over a smooth " << kSize << " x " << kSize << " level; fastest of " << kRuns
+              << " alternating runs each.\n\n"
               << "| map | naive ns/pixel | gaussian ns/pixel | gaussian / naive |\n|---|---:|---:|---:|\n";
     for (const char* name : kMaps) {
         ColorMapLoadOptions opt;
@@ -178,7 +182,9 @@ int main(int argc, char** argv)
         if (!table) return 1;
         double sink = 0;
         LookupCounters counters;
-        const auto [naive, gaussian] = fastest_pair_ms(kRuns, [&] {
+        const auto [naive, gaussian] = fastest_pair_ms(
+            kRuns,
+            [&] {
             double acc = 0;
             for (int i = 0; i < kPixels; ++i) {
                 float m;
@@ -186,12 +192,14 @@ int main(int argc, char** argv)
                 acc += map->map.evaluate(m).g;
             }
             sink += acc;
-        }, [&] {
+            },
+            [&] {
             double acc = 0;
             for (int i = 0; i < kPixels; ++i) {
                 float m[2];
                 fetch<2>(moments, ss[i], ts[i], m);
-                const double sigma = std::sqrt(std::max(0.0, static_cast<double>(m[1]) - static_cast<double>(m[0]) * m[0]));
+                const double sigma =
+                    std::sqrt(std::max(0.0, static_cast<double>(m[1]) - static_cast<double>(m[0]) * m[0]));
                 acc += table->lookup(m[0], sigma, &counters).g;
             }
             sink += acc;

@@ -62,8 +62,8 @@ int timing(const std::string& dir, const ColorConfig& config)
             const std::string path = (tmp / "t.exr").string();
             const double write = fastest_ms(9, [&] { (void)write_gaussian_color_table(path, table, info); });
             char row[200];
-            std::snprintf(row, sizeof row, "| %s | %d x %d | %.1f | %.1f | %.2f |\n", name, values,
-                          opt.sigmas, bake, write, bake / write);
+            std::snprintf(row, sizeof row, "| %s | %d x %d | %.1f | %.1f | %.2f |\n", name, values, opt.sigmas, bake,
+                          write, bake / write);
             std::cout << row;
         }
     }
@@ -73,7 +73,9 @@ int timing(const std::string& dir, const ColorConfig& config)
 
 int spacing(const std::string& dir, const ColorConfig& config)
 {
-    struct Size { int values, sigmas; };
+    struct Size {
+        int values, sigmas;
+    };
     const Size sizes[] = {{256, 256}, {1024, 64}, {1024, 16}, {4096, 16}};
     std::cout << "CIEDE2000 between bilinear lookups and the exact T(v, sigma) at 20000 random (v, sigma)"
                  " (v uniform on the domain, sigma = sigma_max u^2), default domain 0:1, clamp,"
@@ -93,9 +95,8 @@ int spacing(const std::string& dir, const ColorConfig& config)
                 e[k] = measure_lookup_error(table, m.map, {});
             }
             char row[300];
-            std::snprintf(row, sizeof row, "| %s | %d x %d | %.4f | %.4f | %.4f | %.4f | %.3f | %.3f |\n",
-                          name, size.values, size.sigmas, e[0].mean, e[1].mean, e[0].p95, e[1].p95,
-                          e[0].max, e[1].max);
+            std::snprintf(row, sizeof row, "| %s | %d x %d | %.4f | %.4f | %.4f | %.4f | %.3f | %.3f |\n", name,
+                          size.values, size.sigmas, e[0].mean, e[1].mean, e[0].p95, e[1].p95, e[0].max, e[1].max);
             std::cout << row;
         }
     }

@@ -77,8 +77,7 @@ bool write_driver(const std::string& path, int size)
     for (int y = 0; y < size; ++y) {
         for (int x = 0; x < size; ++x) {
             const unsigned h = (unsigned(x) * 73856093u) ^ (unsigned(y) * 19349663u);
-            row[x] = 0.5f + 0.3f * std::sin(x * 0.01f) * std::cos(y * 0.013f) +
-                     0.2f * float(h % 1024) / 1024.0f;
+            row[x] = 0.5f + 0.3f * std::sin(x * 0.01f) * std::cos(y * 0.013f) + 0.2f * float(h % 1024) / 1024.0f;
         }
         if (!out->write_scanline(y, 0, OIIO::TypeDesc::FLOAT, row.data())) return false;
     }
@@ -112,9 +111,9 @@ int main(int argc, char** argv)
     }
     const double driver_mib = double(size) * size * 4 / (1024.0 * 1024.0);
     const std::vector<std::string> bake = {CMFILTER_BINARY, "bake-moments", driver, "-o", ours, "-q"};
-    const std::vector<std::string> maketx = {MAKETX_BINARY, driver, "-o", theirs, "--filter", "box",
-                                             "-d", "float", "--tile", "64", "64", "--compression",
-                                             "zip", "--wrap", "clamp"};
+    const std::vector<std::string> maketx = {MAKETX_BINARY, driver,   "-o",     theirs, "--filter", "box",
+                                             "-d",          "float",  "--tile", "64",   "64",       "--compression",
+                                             "zip",         "--wrap", "clamp"};
     Run a{1e300, 1e300, 0}, b{1e300, 1e300, 0};
     for (int i = 0; i < runs; ++i) {  // alternate, so both see the same load
         keep_best(a, run_child(bake));
@@ -122,15 +121,14 @@ int main(int argc, char** argv)
     }
     std::printf("Machine: %s, %u hardware threads. Driver %d x %d float32 (%.0f MiB in memory); "
                 "best of %d run(s).\n\n",
-                cpu_name().c_str(), std::max(1u, std::thread::hardware_concurrency()), size, size,
-                driver_mib, runs);
+                cpu_name().c_str(), std::max(1u, std::thread::hardware_concurrency()), size, size, driver_mib, runs);
     std::printf("| program | wall s | CPU s | peak RSS MiB | peak / driver |\n|---|---:|---:|---:|---:|\n");
     for (const auto& [name, r] : {std::pair<const char*, Run>{"cmfilter bake-moments", a},
                                   std::pair<const char*, Run>{"maketx --filter box", b}})
         std::printf("| %s | %.2f | %.2f | %.0f | %.2f |\n", name, r.seconds, r.cpu_seconds, r.peak_mib,
                     r.peak_mib / driver_mib);
-    std::printf("\nbake-moments / maketx wall time: %.2f (target <= 1.5); CPU time: %.2f\n",
-                a.seconds / b.seconds, a.cpu_seconds / b.cpu_seconds);
+    std::printf("\nbake-moments / maketx wall time: %.2f (target <= 1.5); CPU time: %.2f\n", a.seconds / b.seconds,
+                a.cpu_seconds / b.cpu_seconds);
     std::remove(ours.c_str());
     std::remove(theirs.c_str());
     std::remove(driver.c_str());

@@ -60,11 +60,12 @@ int main(int argc, char** argv)
 
     const char* specs[] = {"fbm:base=gradient,octaves=6", "fbm:base=value,octaves=6",
                            "turbulence:base=gradient,octaves=6", "fbm:base=gabor,octaves=4"};
-    std::cout << "Machine: " << cpu_name() << ", one thread. " << kPoints
-              << " points per run, footprint LOD uniform over the table's range; fastest of " << kRuns
-              << " alternating runs each; terrain map, default table.\n\n"
-              << "| noise | LOD band | unfiltered ns | filtered ns | filtered / unfiltered | unfiltered + C0 ns | filtered / (unfiltered + C0) |\n"
-              << "|---|---|---:|---:|---:|---:|---:|\n";
+    std::cout
+        << "Machine: " << cpu_name() << ", one thread. " << kPoints
+        << " points per run, footprint LOD uniform over the table's range; fastest of " << kRuns
+        << " alternating runs each; terrain map, default table.\n\n"
+        << "| noise | LOD band | unfiltered ns | filtered ns | filtered / unfiltered | unfiltered + C0 ns | filtered / (unfiltered + C0) |\n"
+        << "|---|---|---:|---:|---:|---:|---:|\n";
     for (const char* text : specs) {
         const auto noise = noise_from_spec(text);
         if (!noise) return 1;
@@ -76,9 +77,8 @@ int main(int argc, char** argv)
         if (!sigmas) return 1;
         const FilteredNoise filtered(*noise, *sigmas);
         // The whole range, then its lower and upper halves.
-        const std::pair<double, double> bands[] = {{lod_first, lod_last},
-                                                   {lod_first, 0.5 * (lod_first + lod_last)},
-                                                   {0.5 * (lod_first + lod_last), lod_last}};
+        const std::pair<double, double> bands[] = {
+            {lod_first, lod_last}, {lod_first, 0.5 * (lod_first + lod_last)}, {0.5 * (lod_first + lod_last), lod_last}};
         for (const auto& [lo, hi] : bands) {
             std::mt19937_64 rng(7);
             std::uniform_real_distribution<double> pos(0.0, 256.0 * p0), lod(lo, hi);
@@ -98,16 +98,22 @@ int main(int argc, char** argv)
                 }
                 sink += acc;
             };
-            const auto [unfiltered, filt] = fastest_pair_ms(kRuns, [&] {
+            const auto [unfiltered, filt] = fastest_pair_ms(
+                kRuns,
+                [&] {
                 double acc = 0;
                 for (int i = 0; i < kPoints; ++i) acc += (*noise)(xs[i], ys[i]);
                 sink += acc;
-            }, filtered_run);
-            const auto [mapped, filt2] = fastest_pair_ms(kRuns, [&] {
+                },
+                filtered_run);
+            const auto [mapped, filt2] = fastest_pair_ms(
+                kRuns,
+                [&] {
                 double acc = 0;
                 for (int i = 0; i < kPoints; ++i) acc += map->map.evaluate((*noise)(xs[i], ys[i])).g;
                 sink += acc;
-            }, filtered_run);
+                },
+                filtered_run);
             const double f = std::min(filt, filt2);
             char row[300];
             std::snprintf(row, sizeof row, "| %s | %.2f .. %.2f | %.1f | %.1f | %.2f | %.1f | %.2f |\n", text, lo, hi,

@@ -14,7 +14,8 @@
 int main()
 {
     using cmfilter::HeightMoments;
-    std::printf("| L | exact mean | fit mean (eq. 17) | exact sigma | fit sigma (eq. 18) |\n|---:|---:|---:|---:|---:|\n");
+    std::printf(
+        "| L | exact mean | fit mean (eq. 17) | exact sigma | fit sigma (eq. 18) |\n|---:|---:|---:|---:|---:|\n");
     for (double L : {0.0, 0.1, 0.3, 1.0, 3.0, 10.0, 30.0, 100.0, 1e3, 1e4, 1e5, 1e6}) {
         const HeightMoments e = cmfilter::exact_height_moments(L, 1), f = cmfilter::paper_height_fit(L, 1);
         std::printf("| %g | %.4f | %.4f | %.4f | %.4f |\n", L, e.mean, f.mean, e.sigma, f.sigma);

@@ -127,7 +127,8 @@ int main()
         const double back_ms = cmfilter_bench::fastest_ms(5, [&] {
             back_lit = 0;
             for (const Pair& p : pairs)
-                if (const auto hit = h.trace(p.origin, p.direction)) back_lit += h.occluded(hit->point, -p.direction) ? 0 : 1;
+                if (const auto hit = h.trace(p.origin, p.direction))
+                    back_lit += h.occluded(hit->point, -p.direction) ? 0 : 1;
         });
         // The march on the first pairs only: it is slow.
         const std::size_t marched = theta_degrees >= 80 ? 2000 : 20000;

@@ -46,7 +46,8 @@ void blur_line(float* p, int n, std::size_t stride, const std::vector<double>& k
     tmp.assign(n, 0.0);
     for (int i = 0; i < n; ++i) {
         double acc = 0;
-        for (int k = -r; k <= r; ++k) acc += kernel[k + r] * p[static_cast<std::size_t>(((i + k) % n + n) % n) * stride];
+        for (int k = -r; k <= r; ++k)
+            acc += kernel[k + r] * p[static_cast<std::size_t>(((i + k) % n + n) % n) * stride];
         tmp[i] = acc;
     }
     for (int i = 0; i < n; ++i) p[static_cast<std::size_t>(i) * stride] = static_cast<float>(tmp[i]);

@@ -52,9 +52,9 @@ using namespace cmfilter;
 
 namespace {
 
-constexpr int kStrata = 32;              // reference: 32 x 32 jittered samples
+constexpr int kStrata = 32;  // reference: 32 x 32 jittered samples
 constexpr double kLodStep = 0.5;
-constexpr double kDomainSigmas = 2.78;   // map domain: mean +- 2.78 sigma (sd = 0.18 of it)
+constexpr double kDomainSigmas = 2.78;  // map domain: mean +- 2.78 sigma (sd = 0.18 of it)
 
 struct Map {
     std::string name;
@@ -77,9 +77,7 @@ int main(int argc, char** argv)
     const int points = argc > 4 ? std::atoi(argv[4]) : 2048;
     const int threads = argc > 5 ? std::atoi(argv[5]) : 0;
     const auto t0 = std::chrono::steady_clock::now();
-    const auto seconds = [&] {
-        return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    };
+    const auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
 
     const auto noise = noise_from_spec(spec_text);
     if (!noise) return 1;
@@ -163,8 +161,7 @@ int main(int argc, char** argv)
                 for (double v : f) reference += maps[m].map.evaluate(v);
                 reference = (1.0 / static_cast<double>(f.size())) * reference;
                 const Rgb estimates[kMethodCount] = {maps[m].table.lookup(mean, sigma),
-                                                     maps[m].table2048.lookup(mean, sigma),
-                                                     maps[m].map.evaluate(mean),
+                                                     maps[m].table2048.lookup(mean, sigma), maps[m].map.evaluate(mean),
                                                      maps[m].table2048.lookup(sample_mean, sample_sigma),
                                                      maps[m].table2048.lookup(sample_mean, sigma)};
                 for (int e = 0; e < kMethodCount; ++e)

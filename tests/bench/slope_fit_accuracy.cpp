@@ -67,7 +67,7 @@ SteepnessColorMap grass_and_rock()
     map.by_angle.vmax = 90;
     for (int i = 0; i < 36; ++i) {
         const double angle = (i + 0.5) * 2.5;
-        const Rgb c = angle < 25 ? grass
+        const Rgb c = angle < 25   ? grass
                       : angle < 35 ? mix(grass, rock, (angle - 25) / 10)
                       : angle < 60 ? rock
                       : angle < 70 ? mix(rock, cliff, (angle - 60) / 10)
@@ -128,7 +128,8 @@ std::vector<Case> sweep(const std::vector<double>& degrees, const std::vector<do
     std::vector<Case> out;
     for (double d : degrees)
         for (double s : sigmas)
-            for (double p : azimuths_degrees) out.push_back({shaped(shape, s), {d * kPi / 180, p * kPi / 180}, shape, s, d});
+            for (double p : azimuths_degrees)
+                out.push_back({shaped(shape, s), {d * kPi / 180, p * kPi / 180}, shape, s, d});
     return out;
 }
 
@@ -187,10 +188,11 @@ void reference_convergence(const char* name, const Map& map, int threads)
     const std::vector<Rgb> reference =
         color_each(cases, threads, [&](const Case& c) { return exact_slope_color(map, c.slopes, c.view, {128}); });
     for (int panels : {8, 16, 32, 64}) {
-        const Summary s = compare(cases, color_each(cases, threads, [&](const Case& c) {
-                                      return exact_slope_color(map, c.slopes, c.view, {panels});
-                                  }),
-                                  reference);
+        const Summary s =
+            compare(cases,
+                    color_each(cases, threads,
+                               [&](const Case& c) { return exact_slope_color(map, c.slopes, c.view, {panels}); }),
+                    reference);
         std::printf("| %s | %d | %.5f | %.5f | %s |\n", name, panels, s.mean, s.max, where(s).c_str());
     }
 }
@@ -208,19 +210,21 @@ void hermite_points(const char* name, const Map& map, int threads)
         const SlopeMoments m = exact_slope_moments(c.slopes, c.view);
         return SlopeGaussian{m.mean_x, m.mean_y, m.xx, m.xy, m.yy};
     };
-    const std::vector<Rgb> dense =
-        color_each(cases, threads, [&](const Case& c) { return exact_slope_color(map, moment_gaussian(c), {0, 0}, {64}); });
+    const std::vector<Rgb> dense = color_each(cases, threads, [&](const Case& c) {
+        return exact_slope_color(map, moment_gaussian(c), {0, 0}, {64});
+    });
     for (int n : {2, 3, 4, 5, 6, 8, 10, 12, 16, 20, 24, 32}) {
-        const Summary s = compare(cases, color_each(cases, threads, [&](const Case& c) {
-                                      return gaussian_slope_color(map, c.slopes, c.view, {n});
-                                  }),
-                                  dense);
+        const Summary s = compare(
+            cases,
+            color_each(cases, threads, [&](const Case& c) { return gaussian_slope_color(map, c.slopes, c.view, {n}); }),
+            dense);
         std::printf("| %s | %d | %.5f | %.5f | %s |\n", name, n, s.mean, s.max, where(s).c_str());
     }
     // What the Gaussian itself leaves: the dense quadrature over it against
     // the exact D_s colour.
-    const Summary g = compare(
-        cases, dense, color_each(cases, threads, [&](const Case& c) { return exact_slope_color(map, c.slopes, c.view, {64}); }));
+    const Summary g = compare(cases, dense, color_each(cases, threads, [&](const Case& c) {
+                                  return exact_slope_color(map, c.slopes, c.view, {64});
+                              }));
     std::printf("| %s | dense Gaussian vs exact D_s | %.5f | %.5f | %s |\n", name, g.mean, g.max, where(g).c_str());
 }
 
@@ -258,18 +262,22 @@ BySigma accuracy(const char* name, const Map& map, int threads)
             std::printf("| %s | %s | %s | %zu |", name, shape, part == 0 ? "0..80" : "81..89.9", cases.size());
             Summary by_default;
             for (int n : kAccuracyPoints) {
-                Summary s = compare(cases, color_each(cases, threads, [&](const Case& c) {
-                                        return gaussian_slope_color(map, c.slopes, c.view, {n});
-                                    }),
-                                    exact);
+                Summary s =
+                    compare(cases,
+                            color_each(cases, threads,
+                                       [&](const Case& c) { return gaussian_slope_color(map, c.slopes, c.view, {n}); }),
+                            exact);
                 std::printf(" %.3f | %.3f |", s.mean, s.max);
                 if (n == GaussianSlopeColorOptions{}.points_per_axis) by_default = std::move(s);
             }
             // The Gaussian alone: a dense quadrature over it.
-            const Summary g = compare(cases, color_each(cases, threads, [&](const Case& c) {
-                                          const SlopeMoments m = exact_slope_moments(c.slopes, c.view);
-                                          return exact_slope_color(map, {m.mean_x, m.mean_y, m.xx, m.xy, m.yy}, {0, 0});
-                                      }),
+            const Summary g = compare(cases,
+                                      color_each(
+                                          cases, threads,
+                                          [&](const Case& c) {
+                const SlopeMoments m = exact_slope_moments(c.slopes, c.view);
+                return exact_slope_color(map, {m.mean_x, m.mean_y, m.xx, m.xy, m.yy}, {0, 0});
+                                          }),
                                       exact);
             std::printf(" %.3f | %.3f | %s |\n", g.mean, g.max, where(by_default).c_str());
             if (part == 0) by_sigma.add(cases, by_default, g);
@@ -300,7 +308,8 @@ int main(int argc, char** argv)
     reference_convergence("grass-rock", rock, threads);
     reference_convergence("hue-wheel", wheel, threads);
 
-    std::printf("\nGauss-Hermite points per axis over the moment Gaussian against dense quadrature of it (CIEDE2000)\n\n");
+    std::printf(
+        "\nGauss-Hermite points per axis over the moment Gaussian against dense quadrature of it (CIEDE2000)\n\n");
     std::printf("| map | points | mean | max | worst at |\n|---|---:|---:|---:|---|\n");
     hermite_points("grass-rock", rock, threads);
     hermite_points("hue-wheel", wheel, threads);
@@ -321,8 +330,9 @@ int main(int argc, char** argv)
     std::printf("\nUp to 80 degrees by sigma_s, the three shapes together: the default %d x %d points and the dense "
                 "quadrature over the Gaussian against the exact D_s colour (CIEDE2000)\n\n",
                 default_points, default_points);
-    std::printf("| map | sigma_s | cases | n = %d mean | max | dense mean | max |\n|---|---:|---:|---:|---:|---:|---:|\n",
-                default_points);
+    std::printf(
+        "| map | sigma_s | cases | n = %d mean | max | dense mean | max |\n|---|---:|---:|---:|---:|---:|---:|\n",
+        default_points);
     print_by_sigma("grass-rock", rock_by_sigma);
     print_by_sigma("hue-wheel", wheel_by_sigma);
     return 0;

@@ -19,8 +19,7 @@
 
 namespace {
 
-bool write(const std::string& path, int w, int h, int ch, OIIO::TypeDesc type, const void* data,
-           float gamma = 0)
+bool write(const std::string& path, int w, int h, int ch, OIIO::TypeDesc type, const void* data, float gamma = 0)
 {
     auto out = OIIO::ImageOutput::create(path);
     OIIO::ImageSpec spec(w, h, ch, type);
@@ -90,12 +89,11 @@ int main(int argc, char** argv)
     std::vector<float> apply_driver(32 * 32);
     for (int y = 0; y < 32; ++y)
         for (int x = 0; x < 32; ++x)  // smooth waves plus texel-scale detail, in [-0.1, 1.1]
-            apply_driver[y * 32 + x] = static_cast<float>(
-                0.5 + 0.35 * std::sin(0.4 * x + 0.1 * y) + 0.25 * std::cos(1.7 * x * y + 0.3 * y));
+            apply_driver[y * 32 + x] =
+                static_cast<float>(0.5 + 0.35 * std::sin(0.4 * x + 0.1 * y) + 0.25 * std::cos(1.7 * x * y + 0.3 * y));
     ok &= write(dir + "/apply-driver.exr", 32, 32, 1, OIIO::TypeDesc::FLOAT, apply_driver.data());
-    const std::vector<float> apply_map = {0.02f, 0.05f, 0.4f,  0.9f, 0.1f, 0.05f, 0.1f,  0.8f,
-                                          0.2f,  2.5f,  2.2f,  0.3f, 0.0f, 0.0f,  0.0f,  0.6f,
-                                          0.6f,  0.6f,  0.05f, 0.9f, 0.3f, 1.0f,  0.95f, 0.9f};
+    const std::vector<float> apply_map = {0.02f, 0.05f, 0.4f, 0.9f, 0.1f, 0.05f, 0.1f,  0.8f, 0.2f, 2.5f, 2.2f,  0.3f,
+                                          0.0f,  0.0f,  0.0f, 0.6f, 0.6f, 0.6f,  0.05f, 0.9f, 0.3f, 1.0f, 0.95f, 0.9f};
     ok &= write(dir + "/apply-map.exr", 8, 1, 3, OIIO::TypeDesc::FLOAT, apply_map.data());
     {
         std::ofstream knots(dir + "/apply-map-knots.txt");

@@ -99,8 +99,7 @@ int main(int argc, char** argv)
     for (int i = 0; i < values; ++i) check(i, 0), check(i, sigmas - 1);
     std::mt19937 rng(1);
     for (int k = 0; k < 3000; ++k) check(static_cast<int>(rng() % values), static_cast<int>(rng() % sigmas));
-    std::cout << "verify_table: " << checked << " nodes, max |table - quadrature| = " << worst
-              << " at value node " << worst_i << ", sigma node " << worst_j << " (tolerance "
-              << tolerance << ")\n";
+    std::cout << "verify_table: " << checked << " nodes, max |table - quadrature| = " << worst << " at value node "
+              << worst_i << ", sigma node " << worst_j << " (tolerance " << tolerance << ")\n";
     return worst <= tolerance ? 0 : 1;
 }

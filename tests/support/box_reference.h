@@ -13,8 +13,8 @@
 namespace cmfilter_test {
 
 struct BoxWeight {
-    int i = 0, j = 0;     // level-0 texel
-    double weight = 0;    // its share of the output texel's area (the shares sum to 1)
+    int i = 0, j = 0;   // level-0 texel
+    double weight = 0;  // its share of the output texel's area (the shares sum to 1)
 };
 
 inline double box_overlap(double a, double b, int i)

@@ -58,10 +58,10 @@ inline Rgb3 reference_map_value(const ReferenceMap& m, double v)
 inline Rgb3 reference_convolution(const ReferenceMap& m, double v, double sigma)
 {
     if (sigma <= 0) return reference_map_value(m, v);
-    static const double gx[5] = {0.1488743389816312, 0.4333953941292472, 0.6794095682990244,
-                                 0.8650633666889845, 0.9739065285171717};
-    static const double gw[5] = {0.2955242247147529, 0.2692667193099963, 0.2190863625159820,
-                                 0.1494513491505806, 0.0666713443086881};
+    static const double gx[5] = {0.1488743389816312, 0.4333953941292472, 0.6794095682990244, 0.8650633666889845,
+                                 0.9739065285171717};
+    static const double gw[5] = {0.2955242247147529, 0.2692667193099963, 0.2190863625159820, 0.1494513491505806,
+                                 0.0666713443086881};
     const double z_lo = -12, z_hi = 12;
     // Breakpoints: kinks of C0(v + sigma z) inside [z_lo, z_hi].
     const int n = static_cast<int>(m.texels.size());
@@ -92,10 +92,7 @@ inline Rgb3 reference_convolution(const ReferenceMap& m, double v, double sigma)
 }
 
 // The IEC 61966-2-1 sRGB decoding formula.
-inline double srgb_to_linear(double e)
-{
-    return e <= 0.04045 ? e / 12.92 : std::pow((e + 0.055) / 1.055, 2.4);
-}
+inline double srgb_to_linear(double e) { return e <= 0.04045 ? e / 12.92 : std::pow((e + 0.055) / 1.055, 2.4); }
 
 // The same curve made C1-continuous (the "moncurve" that OpenColorIO's
 // ExponentWithLinearTransform {gamma: 2.4, offset: 0.055} implements, and so

@@ -94,7 +94,8 @@ inline cmfilter::Material terrain_fbm_material()
     auto table = cmfilter::GaussianColorTable::bake(color.map, table_options);
     REQUIRE(table);
     color.table = std::move(*table);
-    return {{}, std::move(color), cmfilter::NoiseDriver{cmfilter::FilteredNoise(std::move(*noise), std::move(*sigmas))}};
+    return {
+        {}, std::move(color), cmfilter::NoiseDriver{cmfilter::FilteredNoise(std::move(*noise), std::move(*sigmas))}};
 }
 
 // CIEDE2000 between two renders of the same scene, over the pixels the first

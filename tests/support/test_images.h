@@ -20,8 +20,8 @@ inline std::string temp_dir(const std::string& name)
     return dir.string();
 }
 
-inline void write_image(const std::string& path, int w, int h, int ch, OIIO::TypeDesc type,
-                        const void* data, const char* colorspace = nullptr)
+inline void write_image(const std::string& path, int w, int h, int ch, OIIO::TypeDesc type, const void* data,
+                        const char* colorspace = nullptr)
 {
     auto out = OIIO::ImageOutput::create(path);
     REQUIRE(out);

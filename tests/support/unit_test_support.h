@@ -22,8 +22,7 @@ struct MapPair {
 };
 
 // n random texels (blue up to 4: HDR maps too) over [vmin, vmax].
-inline MapPair random_map(std::mt19937_64& rng, int n, cmfilter::WrapMode wrap, double vmin,
-                          double vmax)
+inline MapPair random_map(std::mt19937_64& rng, int n, cmfilter::WrapMode wrap, double vmin, double vmax)
 {
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     MapPair p;

@@ -38,20 +38,18 @@ std::string fixed(double value, int digits)
 
 std::string bench_chart_script(const SceneBench& bench, const std::string& data_path, const std::string& png_path)
 {
-    const bool has_exact = std::any_of(bench.rows.begin(), bench.rows.end(), [](const BenchRow& r) {
-        return r.configuration.method == RenderMethod::Exact;
-    });
+    const bool has_exact = std::any_of(bench.rows.begin(), bench.rows.end(),
+                                       [](const BenchRow& r) { return r.configuration.method == RenderMethod::Exact; });
     const bool has_gaussian_exact = std::any_of(bench.rows.begin(), bench.rows.end(), [](const BenchRow& r) {
         return r.configuration.method == RenderMethod::GaussianExact;
     });
     std::ostringstream s;
     s << "set terminal pngcairo size 900,760 font 'sans,11'\n"
       << "set output " << quoted(png_path) << "\n"
-      << "set title " << quoted(std::filesystem::path(bench.scene).filename().string() + ", " +
-                                std::to_string(bench.width) + " x " + std::to_string(bench.height) +
-                                ": error against a " + std::to_string(bench.reference_samples) +
-                                "-ray reference (two agree to " + fixed(bench.reference_repeatability.all.mean, 2) +
-                                ")")
+      << "set title "
+      << quoted(std::filesystem::path(bench.scene).filename().string() + ", " + std::to_string(bench.width) + " x " +
+                std::to_string(bench.height) + ": error against a " + std::to_string(bench.reference_samples) +
+                "-ray reference (two agree to " + fixed(bench.reference_repeatability.all.mean, 2) + ")")
       << " noenhanced\n"
       << "set xrange [*:" << 2 * bench.reference_seconds << "]\n"
       << "set logscale xy\nset grid\nset bmargin 9\nset key outside below center horizontal maxcols 2 box noenhanced font 'sans,10'\n"
@@ -59,11 +57,17 @@ std::string bench_chart_script(const SceneBench& bench, const std::string& data_
       << "set datafile separator '\\t'\n"
       << "set arrow from " << bench.reference_seconds << ", graph 0 to " << bench.reference_seconds
       << ", graph 1 nohead dt 3 lc rgb 'gray40'\n"
-      << "set label 'reference time' at " << bench.reference_seconds << ", graph 0.95 right offset -0.5,0 tc rgb 'gray40'\n"
+      << "set label 'reference time' at " << bench.reference_seconds
+      << ", graph 0.95 right offset -0.5,0 tc rgb 'gray40'\n"
       << "f(x) = 1.0\n"
-      << "plot " << quoted(data_path) << " using ($1 == 0 ? $3 : 1/0):4 with points pt 9 ps 2 lc rgb 'red' title 'naive', \\\n"
-      << (has_exact ? "     '' using ($1 == 6 ? $3 : 1/0):4 with points pt 8 ps 2 lc rgb 'black' title 'exact (texture histograms, or D_h)', \\\n" : "")
-      << (has_gaussian_exact ? "     '' using ($1 == 7 ? $3 : 1/0):4 with points pt 4 ps 2 lc rgb 'dark-violet' title 'gaussian-exact (D_h moments)', \\\n" : "")
+      << "plot " << quoted(data_path)
+      << " using ($1 == 0 ? $3 : 1/0):4 with points pt 9 ps 2 lc rgb 'red' title 'naive', \\\n"
+      << (has_exact
+              ? "     '' using ($1 == 6 ? $3 : 1/0):4 with points pt 8 ps 2 lc rgb 'black' title 'exact (texture histograms, or D_h)', \\\n"
+              : "")
+      << (has_gaussian_exact
+              ? "     '' using ($1 == 7 ? $3 : 1/0):4 with points pt 4 ps 2 lc rgb 'dark-violet' title 'gaussian-exact (D_h moments)', \\\n"
+              : "")
       << "     '' using ($1 == 1 ? $3 : 1/0):4 with points pt 7 ps 1.6 lc rgb 'blue' title 'gaussian, sqrt sigma spacing', \\\n"
       << "     '' using ($1 == 2 ? $3 : 1/0):4 with points pt 5 ps 1.4 lc rgb 'dark-cyan' title 'gaussian, linear sigma spacing', \\\n"
       << "     '' using ($1 == 3 ? $3 : 1/0):4 with linespoints pt 13 ps 1.4 lc rgb 'dark-green' title 'supersample, rays per pixel', \\\n"
@@ -164,8 +168,8 @@ Status write_bench_chart(const SceneBench& bench, const std::string& png_path)
     auto drawn = run_gnuplot(program);
     std::remove(data.c_str());
     if (!drawn)
-        return io_error("cannot draw '" + png_path + "' with gnuplot (is it installed? apt-get install gnuplot-nox): " +
-                        drawn.error().message);
+        return io_error("cannot draw '" + png_path +
+                        "' with gnuplot (is it installed? apt-get install gnuplot-nox): " + drawn.error().message);
     return out->commit();
 }
 

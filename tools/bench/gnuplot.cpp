@@ -50,8 +50,7 @@ bool write_all(int fd, const std::string& text)
             ok = false;
             if (errno == EPIPE && !was_pending) {
                 const timespec none{0, 0};
-                while (sigtimedwait(&pipe_signal, nullptr, &none) < 0 && errno == EINTR) {
-                }
+                while (sigtimedwait(&pipe_signal, nullptr, &none) < 0 && errno == EINTR) {}
             }
             break;
         }

@@ -20,17 +20,13 @@ std::string BenchConfiguration::label() const
     case RenderMethod::Gaussian: {
         std::ostringstream s;
         s << "gaussian ";
-        if (tolerance > 0)
-            s << "tol " << tolerance;
-        else
-            s << table_values << "x" << table_sigmas << " " << to_string(spacing);
+        if (tolerance > 0) s << "tol " << tolerance;
+        else s << table_values << "x" << table_sigmas << " " << to_string(spacing);
         if (footprint != FootprintWidth::Rms) s << " " << to_string(footprint);
         const double default_shortcut = tolerance > 0 ? kPlainLookupFraction * tolerance : 0.0;
         if (shortcut != default_shortcut) {
-            if (shortcut > 0)
-                s << " shortcut " << shortcut;
-            else
-                s << " no-shortcut";
+            if (shortcut > 0) s << " shortcut " << shortcut;
+            else s << " no-shortcut";
         }
         return s.str();
     }
@@ -149,8 +145,8 @@ void average_in(RenderedImage& sum, const RenderedImage& round, int rounds)
 // they differ by at most options.reference_repeat (BenchOptions). Round 0
 // renders the two with seeds s and s + 1, round k >= 1 with s + 2k + 1 and
 // s + 2k + 2: never s + 2, the configurations' seed.
-Expected<std::pair<RenderedImage, RenderedImage>> repeatable_references(
-    const Scene& scene, const std::vector<Material>& materials, const BenchOptions& options)
+Expected<std::pair<RenderedImage, RenderedImage>>
+repeatable_references(const Scene& scene, const std::vector<Material>& materials, const BenchOptions& options)
 {
     RenderOptions ro;
     ro.method = RenderMethod::Reference;
@@ -175,9 +171,9 @@ Expected<std::pair<RenderedImage, RenderedImage>> repeatable_references(
         if (first->samples + round_samples > options.max_reference_samples) break;
         if (compare(*first, *second, distance_bands(*first)).all.mean <= options.reference_repeat) break;
         if (options.note)
-            options.note(scene.path + ": the references differ by more than " + std::to_string(options.reference_repeat) +
-                         " mean dE00 at " + std::to_string(first->samples) + " rays per pixel; adding " +
-                         std::to_string(round_samples));
+            options.note(scene.path + ": the references differ by more than " +
+                         std::to_string(options.reference_repeat) + " mean dE00 at " + std::to_string(first->samples) +
+                         " rays per pixel; adding " + std::to_string(round_samples));
     }
     return std::make_pair(std::move(*first), std::move(*second));
 }
@@ -203,8 +199,7 @@ Status check_reference_options(const BenchOptions& options)
     return ok();
 }
 
-Expected<SceneBench> bench_scene(const Scene& scene, std::vector<Material>& materials,
-                                 const BenchOptions& options)
+Expected<SceneBench> bench_scene(const Scene& scene, std::vector<Material>& materials, const BenchOptions& options)
 {
     if (options.repeats < 1) return bad_input("bench: repeats must be >= 1, got " + std::to_string(options.repeats));
     if (auto st = check_reference_options(options); !st) return st.error();
@@ -236,7 +231,9 @@ Expected<SceneBench> bench_scene(const Scene& scene, std::vector<Material>& mate
     for (const BenchConfiguration& c : options.configurations) {
         if (c.method == RenderMethod::Exact) {
             if (!exact) {
-                if (options.note) options.note(scene.path + ": exact: left out (not every driver is a texture with at most " + std::to_string(kHistogramMaxValues) + " values)");
+                if (options.note)
+                    options.note(scene.path + ": exact: left out (not every driver is a texture with at most " +
+                                 std::to_string(kHistogramMaxValues) + " values)");
                 continue;
             }
             MaterialOptions mo;
@@ -246,7 +243,8 @@ Expected<SceneBench> bench_scene(const Scene& scene, std::vector<Material>& mate
         }
         if (c.method == RenderMethod::GaussianExact &&
             std::none_of(materials.begin(), materials.end(), is_microsurface)) {
-            if (options.note) options.note(scene.path + ": gaussian-exact: left out (no microsurface: it would be gaussian)");
+            if (options.note)
+                options.note(scene.path + ": gaussian-exact: left out (no microsurface: it would be gaussian)");
             continue;
         }
         BenchRow row;
@@ -283,7 +281,8 @@ Expected<SceneBench> bench_scene(const Scene& scene, std::vector<Material>& mate
                     row.table_values = ax.values;
                     row.table_sigmas = ax.sigmas;
                     row.spacing = ax.spacing;
-                } else if (ax.values != row.table_values || ax.sigmas != row.table_sigmas || ax.spacing != row.spacing) {
+                } else if (ax.values != row.table_values || ax.sigmas != row.table_sigmas ||
+                           ax.spacing != row.spacing) {
                     row.table_values = row.table_sigmas = 0;
                 }
             }
@@ -325,11 +324,12 @@ std::string bench_csv(const std::vector<SceneBench>& benches)
           << e.middle.mean << "," << e.middle.p95 << "," << e.horizon.mean << "," << e.horizon.p95;
     };
     for (const SceneBench& b : benches) {
-        s << b.scene << ",reference," << "reference," << b.reference_samples << ",,,,,0," << b.reference_seconds << ",";
+        s << b.scene << ",reference,"
+          << "reference," << b.reference_samples << ",,,,,0," << b.reference_seconds << ",";
         errors(BandedError{});
         s << ",,,,,\n";
-        s << b.scene << ",reference-repeat," << "reference," << b.reference_samples << ",,,,,0," << b.reference_seconds
-          << ",";
+        s << b.scene << ",reference-repeat,"
+          << "reference," << b.reference_samples << ",,,,,0," << b.reference_seconds << ",";
         errors(b.reference_repeatability);
         s << ",,,,,\n";
         for (const BenchRow& r : b.rows) {
@@ -337,8 +337,7 @@ std::string bench_csv(const std::vector<SceneBench>& benches)
             s << b.scene << "," << c.label() << "," << to_string(c.method) << "," << c.samples << ",";
             if (c.method == RenderMethod::Gaussian && r.table_values > 0)
                 s << r.table_values << "," << r.table_sigmas << "," << to_string(r.spacing);
-            else
-                s << ",,";
+            else s << ",,";
             s << "," << (c.method == RenderMethod::Supersample ? "" : to_string(c.footprint));
             s << "," << r.table_bytes << "," << r.seconds << ",";
             errors(r.error);

@@ -32,8 +32,8 @@ namespace cmfilter::bench {
 
 struct BenchConfiguration {
     RenderMethod method = RenderMethod::Gaussian;
-    int samples = 1;                  // supersample: rays per pixel
-    int table_values = 256;           // gaussian: the table every surface is re-baked with
+    int samples = 1;         // supersample: rays per pixel
+    int table_values = 256;  // gaussian: the table every surface is re-baked with
     int table_sigmas = 256;
     SigmaSpacing spacing = SigmaSpacing::Sqrt;
     FootprintWidth footprint = FootprintWidth::Rms;  // naive, gaussian
@@ -77,32 +77,32 @@ struct BenchRow {
     // gaussian: the tables' axes when every surface's agree (else values 0)
     int table_values = 0, table_sigmas = 0;
     SigmaSpacing spacing = SigmaSpacing::Sqrt;
-    std::size_t footprints = 0;   // gaussian: footprints (pixels or probes) coloured
+    std::size_t footprints = 0;        // gaussian: footprints (pixels or probes) coloured
     std::size_t plain_footprints = 0;  // of which took C0(mean) directly (the shortcut)
-    BandedError error;            // against the reference
+    BandedError error;                 // against the reference
 };
 
 struct SceneBench {
     std::string scene;
     int width = 0, height = 0;
-    std::size_t pixels_hit = 0;  // the pixels compared: a surface covers them at least in part
+    std::size_t pixels_hit = 0;                      // the pixels compared: a surface covers them at least in part
     double near_distance = 0, horizon_distance = 0;  // band limits: the hit distances' terciles
-    double reference_seconds = 0;  // the reference's rounds together
-    int reference_samples = 0;     // rays per pixel of the reference, all rounds together
-    BandedError reference_repeatability;  // the reference against the second one (other seeds)
+    double reference_seconds = 0;                    // the reference's rounds together
+    int reference_samples = 0;                       // rays per pixel of the reference, all rounds together
+    BandedError reference_repeatability;             // the reference against the second one (other seeds)
     std::vector<BenchRow> rows;
 };
 
 struct BenchOptions {
     std::vector<BenchConfiguration> configurations = default_bench_configurations();
-    int reference_samples = kReferenceSamples;  // rays per pixel of each reference round
-    double reference_repeat = 0.2;              // mean CIEDE2000 the two references may differ by
+    int reference_samples = kReferenceSamples;           // rays per pixel of each reference round
+    double reference_repeat = 0.2;                       // mean CIEDE2000 the two references may differ by
     int max_reference_samples = 16 * kReferenceSamples;  // stop growing here (then the repeat may exceed it)
     int repeats = 3;
     std::uint64_t seed = 0;
     int threads = 0;
-    int max_probes = 16;  // RenderOptions::max_probes for naive and gaussian
-    bool edge_coverage = true;  // RenderOptions::edge_coverage for naive and gaussian
+    int max_probes = 16;                           // RenderOptions::max_probes for naive and gaussian
+    bool edge_coverage = true;                     // RenderOptions::edge_coverage for naive and gaussian
     std::function<void(const std::string&)> note;  // one line per finished render, may be empty
 };
 
@@ -119,8 +119,7 @@ Status check_reference_options(const BenchOptions& options);
 // pyramids it needs are baked into the materials then, unless they hold them
 // already (a microsurface needs none). gaussian-exact runs only on a scene
 // with a microsurface (elsewhere it is gaussian).
-Expected<SceneBench> bench_scene(const Scene& scene, std::vector<Material>& materials,
-                                 const BenchOptions& options);
+Expected<SceneBench> bench_scene(const Scene& scene, std::vector<Material>& materials, const BenchOptions& options);
 
 // CSV: header and one row per configuration (and the reference's
 // repeatability as method "reference-repeat"), for every scene.

@@ -30,8 +30,7 @@ double clip01(double v)
 // (sRGB), built from the ITU-R BT.709 primaries and the D65 white point.
 Xyz rec709_to_xyz(double r, double g, double b)
 {
-    return {0.4124 * r + 0.3576 * g + 0.1805 * b,
-            0.2126 * r + 0.7152 * g + 0.0722 * b,
+    return {0.4124 * r + 0.3576 * g + 0.1805 * b, 0.2126 * r + 0.7152 * g + 0.0722 * b,
             0.0193 * r + 0.1192 * g + 0.9505 * b};
 }
 
@@ -87,23 +86,23 @@ double ciede2000(const Lab& x, const Lab& y)
     constexpr double k25_7 = 6103515625.0;  // 25^7
 
     // Step 1: C'_i and h'_i.
-    const double c1 = std::hypot(x.a, x.b);                 // eq. 2
-    const double c2 = std::hypot(y.a, y.b);                 // eq. 2
-    const double c_mean = 0.5 * (c1 + c2);                  // eq. 3
+    const double c1 = std::hypot(x.a, x.b);  // eq. 2
+    const double c2 = std::hypot(y.a, y.b);  // eq. 2
+    const double c_mean = 0.5 * (c1 + c2);   // eq. 3
     const double c_mean7 = pow7(c_mean);
     const double g = 0.5 * (1.0 - std::sqrt(c_mean7 / (c_mean7 + k25_7)));  // eq. 4
-    const double a1p = (1.0 + g) * x.a;                     // eq. 5
-    const double a2p = (1.0 + g) * y.a;                     // eq. 5
-    const double c1p = std::hypot(a1p, x.b);                // eq. 6
-    const double c2p = std::hypot(a2p, y.b);                // eq. 6
-    const double h1p = hue_degrees(x.b, a1p);               // eq. 7
-    const double h2p = hue_degrees(y.b, a2p);               // eq. 7
+    const double a1p = (1.0 + g) * x.a;                                     // eq. 5
+    const double a2p = (1.0 + g) * y.a;                                     // eq. 5
+    const double c1p = std::hypot(a1p, x.b);                                // eq. 6
+    const double c2p = std::hypot(a2p, y.b);                                // eq. 6
+    const double h1p = hue_degrees(x.b, a1p);                               // eq. 7
+    const double h2p = hue_degrees(y.b, a2p);                               // eq. 7
 
     // Step 2: Delta L', Delta C', Delta H'.
-    const double dLp = y.L - x.L;                           // eq. 8
-    const double dCp = c2p - c1p;                           // eq. 9
+    const double dLp = y.L - x.L;  // eq. 8
+    const double dCp = c2p - c1p;  // eq. 9
     const double c_product = c1p * c2p;
-    double dhp = 0.0;                                       // eq. 10: 0 when a chroma is 0
+    double dhp = 0.0;  // eq. 10: 0 when a chroma is 0
     if (c_product != 0.0) {
         dhp = h2p - h1p;
         if (dhp > 180.0) dhp -= 360.0;
@@ -112,32 +111,31 @@ double ciede2000(const Lab& x, const Lab& y)
     const double dHp = 2.0 * std::sqrt(c_product) * std::sin(0.5 * dhp * kDeg);  // eq. 11
 
     // Step 3: the weighting functions and Delta E00.
-    const double Lp_mean = 0.5 * (x.L + y.L);               // eq. 12
-    const double Cp_mean = 0.5 * (c1p + c2p);               // eq. 13
-    double hp_mean = h1p + h2p;                             // eq. 14: the sum when a chroma is 0
+    const double Lp_mean = 0.5 * (x.L + y.L);  // eq. 12
+    const double Cp_mean = 0.5 * (c1p + c2p);  // eq. 13
+    double hp_mean = h1p + h2p;                // eq. 14: the sum when a chroma is 0
     if (c_product != 0.0) {
         if (std::fabs(h1p - h2p) <= 180.0) hp_mean = 0.5 * (h1p + h2p);
         else if (h1p + h2p < 360.0) hp_mean = 0.5 * (h1p + h2p + 360.0);
         else hp_mean = 0.5 * (h1p + h2p - 360.0);
     }
-    const double t = 1.0 - 0.17 * std::cos((hp_mean - 30.0) * kDeg)    // eq. 15
-                     + 0.24 * std::cos(2.0 * hp_mean * kDeg)
-                     + 0.32 * std::cos((3.0 * hp_mean + 6.0) * kDeg)
-                     - 0.20 * std::cos((4.0 * hp_mean - 63.0) * kDeg);
+    const double t = 1.0 - 0.17 * std::cos((hp_mean - 30.0) * kDeg)  // eq. 15
+                     + 0.24 * std::cos(2.0 * hp_mean * kDeg) + 0.32 * std::cos((3.0 * hp_mean + 6.0) * kDeg) -
+                     0.20 * std::cos((4.0 * hp_mean - 63.0) * kDeg);
     const double hue_offset = (hp_mean - 275.0) / 25.0;
-    const double d_theta = 30.0 * std::exp(-hue_offset * hue_offset);   // eq. 16
+    const double d_theta = 30.0 * std::exp(-hue_offset * hue_offset);  // eq. 16
     const double Cp_mean7 = pow7(Cp_mean);
     const double r_c = 2.0 * std::sqrt(Cp_mean7 / (Cp_mean7 + k25_7));  // eq. 17
     const double l50 = (Lp_mean - 50.0) * (Lp_mean - 50.0);
-    const double s_l = 1.0 + 0.015 * l50 / std::sqrt(20.0 + l50);       // eq. 18
-    const double s_c = 1.0 + 0.045 * Cp_mean;                           // eq. 19
-    const double s_h = 1.0 + 0.015 * Cp_mean * t;                       // eq. 20
-    const double r_t = -std::sin(2.0 * d_theta * kDeg) * r_c;           // eq. 21
+    const double s_l = 1.0 + 0.015 * l50 / std::sqrt(20.0 + l50);  // eq. 18
+    const double s_c = 1.0 + 0.045 * Cp_mean;                      // eq. 19
+    const double s_h = 1.0 + 0.015 * Cp_mean * t;                  // eq. 20
+    const double r_t = -std::sin(2.0 * d_theta * kDeg) * r_c;      // eq. 21
 
-    const double tl = dLp / s_l;  // kL = 1
-    const double tc = dCp / s_c;  // kC = 1
-    const double th = dHp / s_h;  // kH = 1
-    return std::sqrt(tl * tl + tc * tc + th * th + r_t * tc * th);      // eq. 22
+    const double tl = dLp / s_l;                                    // kL = 1
+    const double tc = dCp / s_c;                                    // kC = 1
+    const double th = dHp / s_h;                                    // kH = 1
+    return std::sqrt(tl * tl + tc * tc + th * th + r_t * tc * th);  // eq. 22
 }
 
 double ciede2000_linear_rgb(const Rgb& x, const Rgb& y)

@@ -7,8 +7,20 @@ namespace cmfilter {
 struct Rgb {
     double r = 0, g = 0, b = 0;
 
-    Rgb& operator+=(const Rgb& o) { r += o.r; g += o.g; b += o.b; return *this; }
-    Rgb& operator-=(const Rgb& o) { r -= o.r; g -= o.g; b -= o.b; return *this; }
+    Rgb& operator+=(const Rgb& o)
+    {
+        r += o.r;
+        g += o.g;
+        b += o.b;
+        return *this;
+    }
+    Rgb& operator-=(const Rgb& o)
+    {
+        r -= o.r;
+        g -= o.g;
+        b -= o.b;
+        return *this;
+    }
     friend Rgb operator+(Rgb a, const Rgb& b) { return a += b; }
     friend Rgb operator-(Rgb a, const Rgb& b) { return a -= b; }
     friend Rgb operator*(double s, const Rgb& c) { return {s * c.r, s * c.g, s * c.b}; }

@@ -49,8 +49,7 @@ Expected<std::string> ColorConfig::resolve(const std::string& name) const
 {
     if (auto cs = impl_->config->getColorSpace(name.c_str())) return std::string(cs->getName());
     std::ostringstream msg;
-    msg << "unknown colour space '" << name << "' in the " << source_
-        << " OpenColorIO config; known colour spaces:";
+    msg << "unknown colour space '" << name << "' in the " << source_ << " OpenColorIO config; known colour spaces:";
     const auto& cfg = *impl_->config;
     for (int i = 0; i < cfg.getNumColorSpaces(); ++i) {
         auto cs = cfg.getColorSpace(cfg.getColorSpaceNameByIndex(i));
@@ -86,8 +85,8 @@ Status apply(const OCIO::ConstConfigRcPtr& config, std::vector<float>& rgb, cons
         auto processor = config->getProcessor(src.c_str(), dst.c_str());
         // LOSSLESS: no fast pow/log/exp approximations (they cost up to 1e-6
         // absolute on sRGB decoding, the whole accuracy budget of a table).
-        auto cpu = processor->getOptimizedCPUProcessor(OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32,
-                                                        OCIO::OPTIMIZATION_LOSSLESS);
+        auto cpu =
+            processor->getOptimizedCPUProcessor(OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32, OCIO::OPTIMIZATION_LOSSLESS);
         OCIO::PackedImageDesc desc(rgb.data(), static_cast<long>(rgb.size() / 3), 1, 3);
         cpu->apply(desc);
     } catch (const OCIO::Exception& e) {

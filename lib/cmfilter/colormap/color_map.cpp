@@ -32,16 +32,15 @@ Status validate(const ColorMap& map, const std::string& what)
     if (map.texels.empty()) return bad_input(what + ": the colour map has no texels");
     if (!std::isfinite(map.vmin) || !std::isfinite(map.vmax) || !(map.vmin < map.vmax)) {
         std::ostringstream msg;
-        msg << what << ": domain " << map.vmin << ":" << map.vmax
-            << " is invalid (expected finite vmin < vmax)";
+        msg << what << ": domain " << map.vmin << ":" << map.vmax << " is invalid (expected finite vmin < vmax)";
         return bad_input(msg.str());
     }
     for (std::size_t i = 0; i < map.texels.size(); ++i) {
         const Rgb& c = map.texels[i];
         if (!std::isfinite(c.r) || !std::isfinite(c.g) || !std::isfinite(c.b)) {
             std::ostringstream msg;
-            msg << what << ": texel " << i << " is not finite (" << c.r << ", " << c.g << ", "
-                << c.b << "); expected finite colours";
+            msg << what << ": texel " << i << " is not finite (" << c.r << ", " << c.g << ", " << c.b
+                << "); expected finite colours";
             return bad_input(msg.str());
         }
     }

@@ -10,8 +10,8 @@
 
 namespace cmfilter {
 
-Expected<std::vector<float>> image_rgb_texels(const ImageData& img, const std::string& path, int start_x,
-                                              int start_y, int step_x, int step_y, int count)
+Expected<std::vector<float>> image_rgb_texels(const ImageData& img, const std::string& path, int start_x, int start_y,
+                                              int step_x, int step_y, int count)
 {
     std::vector<float> rgb(static_cast<std::size_t>(count) * 3);
     for (int i = 0; i < count; ++i) {
@@ -21,8 +21,8 @@ Expected<std::vector<float>> image_rgb_texels(const ImageData& img, const std::s
             const float v = img.channels >= 3 ? p[ch] : p[0];
             if (!std::isfinite(v)) {
                 std::ostringstream msg;
-                msg << "'" << path << "' has a non-finite texel at (" << x << ", " << y
-                    << ") channel " << ch << ": " << v << "; expected finite colours";
+                msg << "'" << path << "' has a non-finite texel at (" << x << ", " << y << ") channel " << ch << ": "
+                    << v << "; expected finite colours";
                 return bad_input(msg.str());
             }
             rgb[3 * i + ch] = v;
@@ -50,11 +50,9 @@ Expected<ColorMapProvenance> image_map_provenance(const std::string& path, const
     return prov;
 }
 
-Expected<LoadedColorMap> load_color_map(const ColorMapLoadOptions& options,
-                                        const ColorConfig& config)
+Expected<LoadedColorMap> load_color_map(const ColorMapLoadOptions& options, const ColorConfig& config)
 {
-    if (!std::isfinite(options.vmin) || !std::isfinite(options.vmax) ||
-        !(options.vmin < options.vmax)) {
+    if (!std::isfinite(options.vmin) || !std::isfinite(options.vmax) || !(options.vmin < options.vmax)) {
         std::ostringstream msg;
         msg << "ColorMapLoadOptions::vmin:vmax " << options.vmin << ":" << options.vmax
             << " is invalid (expected finite vmin < vmax)";

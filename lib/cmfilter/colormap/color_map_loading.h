@@ -20,9 +20,9 @@ namespace cmfilter {
 
 struct ColorMapLoadOptions {
     std::string path;
-    std::optional<int> row;        // which row of a taller image
-    std::optional<int> column;     // or which column (a vertical gradient)
-    std::string colorspace;        // empty: decided from the file
+    std::optional<int> row;     // which row of a taller image
+    std::optional<int> column;  // or which column (a vertical gradient)
+    std::string colorspace;     // empty: decided from the file
     double vmin = 0.0;
     double vmax = 1.0;
     WrapMode wrap = WrapMode::Clamp;
@@ -30,14 +30,14 @@ struct ColorMapLoadOptions {
 
 struct ColorMapProvenance {
     std::string path;
-    std::string sha256;            // of the file's bytes
+    std::string sha256;  // of the file's bytes
     int image_width = 0;
     int image_height = 0;
-    std::string selection;         // "row 0", "column 3"
-    std::string colorspace;        // canonical OCIO name the texels were converted from
-    std::string colorspace_rule;   // "--colorspace", "file metadata", "default for integer files", ...
-    std::string linear_space;      // the config's scene_linear colour space
-    std::string ocio_config;       // "built-in" or a path
+    std::string selection;        // "row 0", "column 3"
+    std::string colorspace;       // canonical OCIO name the texels were converted from
+    std::string colorspace_rule;  // "--colorspace", "file metadata", "default for integer files", ...
+    std::string linear_space;     // the config's scene_linear colour space
+    std::string ocio_config;      // "built-in" or a path
 };
 
 struct LoadedColorMap {
@@ -49,14 +49,13 @@ struct LoadedColorMap {
 // `count` texels of `img` from (start_x, start_y) in steps of (step_x,
 // step_y) as interleaved RGB (grey replicated), BadInput for a non-finite
 // one;
-Expected<std::vector<float>> image_rgb_texels(const ImageData& img, const std::string& path, int start_x,
-                                              int start_y, int step_x, int step_y, int count);
+Expected<std::vector<float>> image_rgb_texels(const ImageData& img, const std::string& path, int start_x, int start_y,
+                                              int step_x, int step_y, int count);
 // and the provenance of a map read from `img` at `path` (hashing the file).
 Expected<ColorMapProvenance> image_map_provenance(const std::string& path, const ImageData& img,
                                                   const std::string& selection, const ImageColorSpace& space,
                                                   const ColorConfig& config);
 
-Expected<LoadedColorMap> load_color_map(const ColorMapLoadOptions& options,
-                                        const ColorConfig& config);
+Expected<LoadedColorMap> load_color_map(const ColorMapLoadOptions& options, const ColorConfig& config);
 
 }  // namespace cmfilter

@@ -8,8 +8,8 @@ Status check_artefact_kind(const OIIO::ImageSpec& spec, const std::string& path,
 {
     const std::string found = spec.get_string_attribute("cmfilter:kind");
     if (found != kind)
-        return bad_input("'" + path + "' is not a cmfilter " + what + " (cmfilter:kind is '" + found +
-                         "', expected '" + kind + "')");
+        return bad_input("'" + path + "' is not a cmfilter " + what + " (cmfilter:kind is '" + found + "', expected '" +
+                         kind + "')");
     const int found_version = spec.get_int_attribute("cmfilter:format_version", 0);
     if (found_version != version)
         return bad_input("'" + path + "' has " + what + " format version " + std::to_string(found_version) +

@@ -21,21 +21,19 @@ std::string channel_list(const OIIO::ImageSpec& spec)
     std::string names;
     for (int c = 0; c < spec.nchannels; ++c) {
         if (c) names += ", ";
-        names += c < static_cast<int>(spec.channelnames.size()) ? spec.channelnames[c]
-                                                                 : std::to_string(c);
+        names += c < static_cast<int>(spec.channelnames.size()) ? spec.channelnames[c] : std::to_string(c);
     }
     return names;
 }
 
 // The channel `wanted` names (a name, else a 0-based index) in spec.
-Expected<int> select_channel(const std::string& path, const OIIO::ImageSpec& spec,
-                             const std::string& wanted)
+Expected<int> select_channel(const std::string& path, const OIIO::ImageSpec& spec, const std::string& wanted)
 {
     const std::string channels = "(channels: " + channel_list(spec) + ")";
     if (wanted.empty()) {
         if (spec.nchannels == 1) return 0;
-        return bad_input("'" + path + "' has " + std::to_string(spec.nchannels) + " channels " +
-                         channels + "; a driver is one channel: choose it with --channel NAME or INDEX");
+        return bad_input("'" + path + "' has " + std::to_string(spec.nchannels) + " channels " + channels +
+                         "; a driver is one channel: choose it with --channel NAME or INDEX");
     }
     for (int c = 0; c < static_cast<int>(spec.channelnames.size()); ++c)
         if (spec.channelnames[c] == wanted) return c;
@@ -59,10 +57,7 @@ struct RowScan {
 
 }  // namespace
 
-const char* to_string(NonFinitePolicy policy)
-{
-    return policy == NonFinitePolicy::Zero ? "zero" : "error";
-}
+const char* to_string(NonFinitePolicy policy) { return policy == NonFinitePolicy::Zero ? "zero" : "error"; }
 
 Expected<NonFinitePolicy> parse_non_finite_policy(const std::string& name)
 {
@@ -130,9 +125,8 @@ Expected<DriverImage> read_driver(const DriverReadOptions& options)
     }
     if (total.nonfinite > 0 && !replace) {
         std::ostringstream msg;
-        msg << "'" << path << "' has " << total.nonfinite << " non-finite texel"
-            << (total.nonfinite == 1 ? "" : "s") << " (first at (" << total.first_bad << ", "
-            << first_bad_row << "): " << total.first_bad_value
+        msg << "'" << path << "' has " << total.nonfinite << " non-finite texel" << (total.nonfinite == 1 ? "" : "s")
+            << " (first at (" << total.first_bad << ", " << first_bad_row << "): " << total.first_bad_value
             << "); expected finite values (--nan zero replaces them with 0)";
         return bad_input(msg.str());
     }

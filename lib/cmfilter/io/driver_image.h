@@ -28,18 +28,18 @@ struct DriverReadOptions {
     std::string path;
     std::string channel;  // a channel name or 0-based index; empty: the image must have one channel
     NonFinitePolicy nonfinite = NonFinitePolicy::Error;
-    int threads = 0;      // 0: all cores
+    int threads = 0;  // 0: all cores
 };
 
 struct DriverImage {
     int width = 0;
     int height = 0;
-    std::string channel;          // name of the channel read ("" when the file names none)
+    std::string channel;  // name of the channel read ("" when the file names none)
     int channel_index = 0;
-    std::string pixel_type;       // stored type ("uint8", "half", "float", ...)
-    std::vector<float> values;    // width * height, row-major, top row first
+    std::string pixel_type;     // stored type ("uint8", "half", "float", ...)
+    std::vector<float> values;  // width * height, row-major, top row first
     std::size_t nonfinite_replaced = 0;
-    double mean = 0;              // over all texels, after replacement (double precision)
+    double mean = 0;  // over all texels, after replacement (double precision)
     double min = 0;
     double max = 0;
 };

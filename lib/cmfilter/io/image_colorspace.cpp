@@ -9,8 +9,8 @@ namespace cmfilter {
 namespace {
 
 // The colour space as named (before resolution) and the rule that chose it.
-Expected<ImageColorSpace> choose(const ImageData& img, const std::string& path,
-                                 const std::string& requested, const std::string& option)
+Expected<ImageColorSpace> choose(const ImageData& img, const std::string& path, const std::string& requested,
+                                 const std::string& option)
 {
     if (!requested.empty()) return ImageColorSpace{requested, option};
     if (img.colorspace_attr == "GammaCorrected") {
@@ -20,8 +20,8 @@ Expected<ImageColorSpace> choose(const ImageData& img, const std::string& path,
         if (std::fabs(g - 1.8f) < 0.01f) return ImageColorSpace{"Gamma 1.8", "file metadata (gamma 1.8)"};
         if (std::fabs(g - 1.0f) < 0.01f) return ImageColorSpace{"scene_linear", "file metadata (gamma 1.0)"};
         std::ostringstream msg;
-        msg << "'" << path << "' declares gamma " << g
-            << ", which no colour space of the config matches; pass " << option << " NAME";
+        msg << "'" << path << "' declares gamma " << g << ", which no colour space of the config matches; pass "
+            << option << " NAME";
         return bad_input(msg.str());
     }
     if (!img.colorspace_attr.empty()) return ImageColorSpace{img.colorspace_attr, "file metadata"};
@@ -32,8 +32,7 @@ Expected<ImageColorSpace> choose(const ImageData& img, const std::string& path,
 }  // namespace
 
 Expected<ImageColorSpace> decide_image_colorspace(const ImageData& img, const std::string& path,
-                                                  const std::string& requested,
-                                                  const std::string& option,
+                                                  const std::string& requested, const std::string& option,
                                                   const ColorConfig& config)
 {
     auto choice = choose(img, path, requested, option);
@@ -49,8 +48,7 @@ Expected<ImageColorSpace> decide_image_colorspace(const ImageData& img, const st
     return ImageColorSpace{*canonical, choice->rule};
 }
 
-Status image_rgb_to_scene_linear(std::vector<float>& rgb, const ImageColorSpace& space,
-                                 const ColorConfig& config)
+Status image_rgb_to_scene_linear(std::vector<float>& rgb, const ImageColorSpace& space, const ColorConfig& config)
 {
     if (config.is_data(space.colorspace)) return ok();
     return config.to_scene_linear(rgb, space.colorspace);

@@ -26,13 +26,11 @@ struct ImageColorSpace {
 // `option` names where that choice comes from ("--colorspace"): it is the rule
 // when `requested` is used, and the hint in errors about the file's metadata.
 Expected<ImageColorSpace> decide_image_colorspace(const ImageData& img, const std::string& path,
-                                                  const std::string& requested,
-                                                  const std::string& option,
+                                                  const std::string& requested, const std::string& option,
                                                   const ColorConfig& config);
 
 // Converts interleaved RGB floats in place from `space` to scene_linear (data
 // colour spaces are left as they are).
-Status image_rgb_to_scene_linear(std::vector<float>& rgb, const ImageColorSpace& space,
-                                 const ColorConfig& config);
+Status image_rgb_to_scene_linear(std::vector<float>& rgb, const ImageColorSpace& space, const ColorConfig& config);
 
 }  // namespace cmfilter

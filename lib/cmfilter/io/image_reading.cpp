@@ -11,16 +11,14 @@ namespace fs = std::filesystem;
 
 namespace cmfilter {
 
-Expected<std::unique_ptr<OIIO::ImageInput>> open_image_input(const std::string& path,
-                                                             const OIIO::ImageSpec* config)
+Expected<std::unique_ptr<OIIO::ImageInput>> open_image_input(const std::string& path, const OIIO::ImageSpec* config)
 {
     std::error_code ec;
     if (!fs::exists(path, ec)) return io_error("cannot read '" + path + "': no such file");
     if (fs::is_directory(path, ec)) return io_error("cannot read '" + path + "': it is a directory");
     if (!std::ifstream(path, std::ios::binary).good())
         return io_error("cannot read '" + path + "': permission denied or unreadable");
-    if (fs::file_size(path, ec) == 0)
-        return bad_input("'" + path + "' is empty (0 bytes); expected an image");
+    if (fs::file_size(path, ec) == 0) return bad_input("'" + path + "' is empty (0 bytes); expected an image");
 
     auto in = OIIO::ImageInput::open(path, config);
     if (!in) {
@@ -31,8 +29,8 @@ Expected<std::unique_ptr<OIIO::ImageInput>> open_image_input(const std::string& 
     const OIIO::ImageSpec& spec = in->spec();
     if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) {
         std::ostringstream msg;
-        msg << "'" << path << "' has no pixels (" << spec.width << " x " << spec.height << ", "
-            << spec.nchannels << " channels); expected at least 1 x 1";
+        msg << "'" << path << "' has no pixels (" << spec.width << " x " << spec.height << ", " << spec.nchannels
+            << " channels); expected at least 1 x 1";
         return bad_input(msg.str());
     }
     return Expected<std::unique_ptr<OIIO::ImageInput>>(std::move(in));
@@ -51,8 +49,7 @@ Expected<ImageData> read_image(const std::string& path)
     img.channel_names = spec.channelnames;
     img.format = in->format_name();
     img.pixel_type = spec.format.c_str();
-    img.is_float = spec.format.basetype == OIIO::TypeDesc::HALF ||
-                   spec.format.basetype == OIIO::TypeDesc::FLOAT ||
+    img.is_float = spec.format.basetype == OIIO::TypeDesc::HALF || spec.format.basetype == OIIO::TypeDesc::FLOAT ||
                    spec.format.basetype == OIIO::TypeDesc::DOUBLE;
     // colorInteropID (the OpenEXR / OpenImageIO 3 convention) wins over
     // oiio:ColorSpace, which OpenImageIO 2.4 reports as "Linear" for any EXR.

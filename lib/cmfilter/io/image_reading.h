@@ -19,12 +19,12 @@ struct ImageData {
     int height = 0;
     int channels = 0;
     std::vector<std::string> channel_names;
-    std::vector<float> pixels;     // width * height * channels, row-major, top row first
-    std::string format;            // OpenImageIO format name ("png", "openexr", ...)
-    std::string pixel_type;        // stored type ("uint8", "half", "float", ...)
-    bool is_float = false;         // stored as half/float/double
-    std::string colorspace_attr;   // "colorInteropID", else "oiio:ColorSpace", or empty
-    float gamma_attr = 0;          // "oiio:Gamma" when declared, else 0
+    std::vector<float> pixels;    // width * height * channels, row-major, top row first
+    std::string format;           // OpenImageIO format name ("png", "openexr", ...)
+    std::string pixel_type;       // stored type ("uint8", "half", "float", ...)
+    bool is_float = false;        // stored as half/float/double
+    std::string colorspace_attr;  // "colorInteropID", else "oiio:ColorSpace", or empty
+    float gamma_attr = 0;         // "oiio:Gamma" when declared, else 0
 };
 
 Expected<ImageData> read_image(const std::string& path);

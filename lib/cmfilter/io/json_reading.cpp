@@ -43,15 +43,9 @@ std::string JsonValue::pointer_text() const
     return text.empty() ? "(root)" : text;
 }
 
-JsonValue JsonValue::member(const std::string& key) const
-{
-    return JsonValue(value_->at(key), file_, pointer_ / key);
-}
+JsonValue JsonValue::member(const std::string& key) const { return JsonValue(value_->at(key), file_, pointer_ / key); }
 
-JsonValue JsonValue::element(std::size_t index) const
-{
-    return JsonValue(value_->at(index), file_, pointer_ / index);
-}
+JsonValue JsonValue::element(std::size_t index) const { return JsonValue(value_->at(index), file_, pointer_ / index); }
 
 Error JsonValue::error(const std::string& what) const { return bad_input(file_ + ": " + pointer_text() + ": " + what); }
 
@@ -112,8 +106,7 @@ std::optional<JsonValue> JsonObject::find(const std::string& key) const
 
 Expected<JsonValue> JsonObject::require(const std::string& key) const
 {
-    if (!has(key))
-        return value_.member_error(key, "required key is missing");
+    if (!has(key)) return value_.member_error(key, "required key is missing");
     return value_.member(key);
 }
 

@@ -20,8 +20,7 @@ inline double double_attribute(const OIIO::ImageSpec& spec, const char* name)
 {
     const OIIO::ParamValue* p = spec.find_attribute(name);
     if (!p) return std::nan("");
-    return p->type() == OIIO::TypeDesc::DOUBLE ? p->get<double>()
-                                               : static_cast<double>(p->get_float());
+    return p->type() == OIIO::TypeDesc::DOUBLE ? p->get<double>() : static_cast<double>(p->get_float());
 }
 
 }  // namespace cmfilter

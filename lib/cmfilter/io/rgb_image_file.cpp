@@ -19,15 +19,15 @@ Status check_rgb_image_output(const std::string& path, bool exr_only)
     return check_output_path(path, "");
 }
 
-Status write_rgb_image(const std::string& path, int width, int height, int channels,
-                       const std::vector<float>& pixels, const std::string& linear_space,
-                       const ImageAttributes& attributes, const ColorConfig& config)
+Status write_rgb_image(const std::string& path, int width, int height, int channels, const std::vector<float>& pixels,
+                       const std::string& linear_space, const ImageAttributes& attributes, const ColorConfig& config)
 {
     if (auto st = check_rgb_image_output(path); !st) return st;
     const bool exr = lowercase_extension(path) == ".exr";
     if (!exr && channels != 3)
         return bad_input("output '" + path + "': PNG and JPEG need 3 channels, got " + std::to_string(channels));
-    if (pixels.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * static_cast<std::size_t>(channels))
+    if (pixels.size() !=
+        static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * static_cast<std::size_t>(channels))
         return runtime_error("image for '" + path + "' has " + std::to_string(pixels.size()) + " values, expected " +
                              std::to_string(static_cast<long long>(width) * height * channels));
     OIIO::ImageSpec spec(width, height, channels, exr ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);

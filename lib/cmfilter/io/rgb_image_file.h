@@ -27,8 +27,7 @@ Status check_rgb_image_output(const std::string& path, bool exr_only = false);
 // `pixels` holds width * height * channels floats, top row first. PNG/JPEG
 // need 3 channels. `linear_space` names the colour space of the floats in
 // the EXR (empty for data such as AOVs).
-Status write_rgb_image(const std::string& path, int width, int height, int channels,
-                       const std::vector<float>& pixels, const std::string& linear_space,
-                       const ImageAttributes& attributes, const ColorConfig& config);
+Status write_rgb_image(const std::string& path, int width, int height, int channels, const std::vector<float>& pixels,
+                       const std::string& linear_space, const ImageAttributes& attributes, const ColorConfig& config);
 
 }  // namespace cmfilter

@@ -10,8 +10,20 @@ namespace cmfilter {
 struct Vec3 {
     double x = 0, y = 0, z = 0;
 
-    Vec3& operator+=(const Vec3& o) { x += o.x; y += o.y; z += o.z; return *this; }
-    Vec3& operator-=(const Vec3& o) { x -= o.x; y -= o.y; z -= o.z; return *this; }
+    Vec3& operator+=(const Vec3& o)
+    {
+        x += o.x;
+        y += o.y;
+        z += o.z;
+        return *this;
+    }
+    Vec3& operator-=(const Vec3& o)
+    {
+        x -= o.x;
+        y -= o.y;
+        z -= o.z;
+        return *this;
+    }
     friend Vec3 operator+(Vec3 a, const Vec3& b) { return a += b; }
     friend Vec3 operator-(Vec3 a, const Vec3& b) { return a -= b; }
     friend Vec3 operator-(const Vec3& a) { return {-a.x, -a.y, -a.z}; }

@@ -31,8 +31,8 @@
 namespace cmfilter {
 
 struct DisplacementMaskingOptions {
-    int azimuths = 32;        // Lambda tabulated at this many azimuths, linear between; >= 1
-    int max_texels = 16384;   // a regular subset of the texels beyond this many; >= 1
+    int azimuths = 32;       // Lambda tabulated at this many azimuths, linear between; >= 1
+    int max_texels = 16384;  // a regular subset of the texels beyond this many; >= 1
 };
 
 class DisplacementMasking {

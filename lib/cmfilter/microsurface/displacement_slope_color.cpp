@@ -36,7 +36,8 @@ DisplacementSlopeLayer displacement_slope_layer(const DisplacementTexture& textu
                       ? most
                       : std::max(least, static_cast<int>(std::ceil(texels * options.samples_per_texel)));
     Rgb color_sum, seen_colour_sum, plain;
-    double seen_sum = 0, seen_lit_sum = 0, seen_area_sum = 0;  // weights as the colour takes them (times lambda_k when correlated)
+    double seen_sum = 0, seen_lit_sum = 0,
+           seen_area_sum = 0;  // weights as the colour takes them (times lambda_k when correlated)
     for (int k = 0; k < n; ++k) {
         const double a = std::fmod((k + 0.5) * kAlpha1, 1.0) - 0.5, b = std::fmod((k + 0.5) * kAlpha2, 1.0) - 0.5;
         const double x = u + a * e1u + b * e2u, y = v + a * e1v + b * e2v;
@@ -61,12 +62,10 @@ DisplacementSlopeLayer displacement_slope_layer(const DisplacementTexture& textu
     DisplacementSlopeLayer out;
     const double color_weight = correlated ? seen_lit_sum : seen_sum;
     if (map) {
-        if (color_weight > 0)
-            out.colour = (1.0 / color_weight) * color_sum;
+        if (color_weight > 0) out.colour = (1.0 / color_weight) * color_sum;
         else if (seen_area_sum > 0)  // seen, but nothing seen faces the light: eq. 20's colour
             out.colour = (1.0 / seen_area_sum) * seen_colour_sum;
-        else
-            out.colour = (1.0 / n) * plain;
+        else out.colour = (1.0 / n) * plain;
     }
     out.visibility = seen_sum > 0 ? std::clamp(seen_lit_sum / seen_sum, 0.0, 1.0)
                                   : mean_visibility(lambda_o, lambda_i, d.phi_o - d.phi_i, options.masking);

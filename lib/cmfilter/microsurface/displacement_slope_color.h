@@ -54,15 +54,15 @@ struct DisplacementSlopeColorOptions {
     // Points per footprint: samples_per_texel per texel the parallelogram
     // covers, within [min_samples, max_samples] (a point footprint takes
     // min_samples of the same point).
-    int max_samples = 4096;      // >= 1
-    int min_samples = 64;        // >= 1
+    int max_samples = 4096;  // >= 1
+    int min_samples = 64;    // >= 1
     double samples_per_texel = 16;
     MaskingShadowing masking = MaskingShadowing::Uncorrelated;
     SlopeShading shading = SlopeShading::Uncorrelated;
 };
 
 struct DisplacementSlopeLayer {
-    Rgb colour;           // black without a map
+    Rgb colour;  // black without a map
     double visibility = 1;
 };
 

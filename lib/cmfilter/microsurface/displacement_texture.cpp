@@ -53,8 +53,7 @@ Linear linear_at(const std::vector<double>& f, int n, const Cell& c)
     const double f00 = f[static_cast<std::size_t>(c.y0) * n + c.x0], f10 = f[static_cast<std::size_t>(c.y0) * n + c.x1];
     const double f01 = f[static_cast<std::size_t>(c.y1) * n + c.x0], f11 = f[static_cast<std::size_t>(c.y1) * n + c.x1];
     const double top = f00 + c.a * (f10 - f00), bottom = f01 + c.a * (f11 - f01);
-    return {top + c.b * (bottom - top), ((f10 - f00) + c.b * ((f11 - f01) - (f10 - f00))) * n,
-            (bottom - top) * n};
+    return {top + c.b * (bottom - top), ((f10 - f00) + c.b * ((f11 - f01) - (f10 - f00))) * n, (bottom - top) * n};
 }
 
 using Moments = std::array<double, kChannels>;
@@ -173,7 +172,8 @@ Expected<DisplacementTexture> DisplacementTexture::from_texels(std::vector<float
     const auto channels_of = [&](std::size_t i, auto* out, std::size_t stride) {
         const double dh = h[i] - data->reference, sx = data->sx[i], sy = data->sy[i];
         const double values[kChannels] = {dh, sx, sy, sx * sx, sy * sy, sx * sy, dh * dh};
-        for (int c = 0; c < kChannels; ++c) out[c * stride] = static_cast<std::remove_pointer_t<decltype(out)>>(values[c]);
+        for (int c = 0; c < kChannels; ++c)
+            out[c * stride] = static_cast<std::remove_pointer_t<decltype(out)>>(values[c]);
     };
     std::vector<float> level0(count * kChannels);
     for (std::size_t i = 0; i < count; ++i) channels_of(i, level0.data() + i * kChannels, 1);
@@ -192,8 +192,8 @@ Expected<DisplacementTexture> DisplacementTexture::from_texels(std::vector<float
     const DisplacementTexture surface(data);  // its height() and slope(), for the masked table
     data->masked = MaskedSlopeTable::build(
         [&](double u, double v, double& h, double& sx, double& sy) {
-            h = surface.height(u, v);
-            surface.slope(u, v, sx, sy);
+        h = surface.height(u, v);
+        surface.slope(u, v, sx, sy);
         },
         n, data->masking);
     return DisplacementTexture(std::move(data));
@@ -231,7 +231,8 @@ int DisplacementTexture::level_size(int k) const { return box_level_extent(data_
 std::array<double, kChannels> DisplacementTexture::pyramid_texel(int k, int x, int y) const
 {
     const int m = level_size(k);
-    const float* t = data_->levels[k].data() + (static_cast<std::size_t>(wrap_index(y, m)) * m + wrap_index(x, m)) * kChannels;
+    const float* t = data_->levels[k].data() +
+                     (static_cast<std::size_t>(wrap_index(y, m)) * m + wrap_index(x, m)) * kChannels;
     std::array<double, kChannels> out;
     for (int c = 0; c < kChannels; ++c) out[c] = t[c];
     // Back from heights about the mean: E[h] = E[dh] + r, E[h^2] = E[dh^2] + 2 r E[dh] + r^2.
@@ -257,7 +258,8 @@ DisplacementFootprint DisplacementTexture::footprint(double u, double v, double 
     // Between the linearised fields (0) and the box means (1).
     const double box_weight = std::clamp(lod - kLinearLod, 0.0, 1.0);
     Moments total{};
-    if (infinite) std::copy(d.table.means().begin(), d.table.means().end(), total.begin());  // the whole texture's means
+    if (infinite)
+        std::copy(d.table.means().begin(), d.table.means().end(), total.begin());  // the whole texture's means
     for (int j = 0; j < (infinite ? 0 : probes.count); ++j) {
         const double offset = (j + 0.5) / probes.count - 0.5;
         const double cu = u + offset * probes.step_u, cv = v + offset * probes.step_v;
@@ -279,7 +281,8 @@ DisplacementFootprint DisplacementTexture::footprint(double u, double v, double 
             const Linear sx = linear_at(d.sx, n, c), sy = linear_at(d.sy, n, c);
             const auto cov = [&](const Linear& f, const Linear& g) {
                 return ((f.du * au + f.dv * av) * (g.du * au + g.dv * av) +
-                        (f.du * bu + f.dv * bv) * (g.du * bu + g.dv * bv)) / 12;
+                        (f.du * bu + f.dv * bv) * (g.du * bu + g.dv * bv)) /
+                       12;
             };
             const Moments linear = {h.value,
                                     sx.value,
@@ -288,8 +291,7 @@ DisplacementFootprint DisplacementTexture::footprint(double u, double v, double 
                                     sy.value * sy.value + cov(sy, sy),
                                     sx.value * sy.value + cov(sx, sy),
                                     h.value * h.value + cov(h, h)};
-            for (int ch = 0; ch < kChannels; ++ch)
-                m[ch] = box_weight * m[ch] + (1 - box_weight) * linear[ch];
+            for (int ch = 0; ch < kChannels; ++ch) m[ch] = box_weight * m[ch] + (1 - box_weight) * linear[ch];
         }
         for (int ch = 0; ch < kChannels; ++ch) total[ch] += m[ch];
     }
@@ -309,7 +311,7 @@ DisplacementFootprint DisplacementTexture::footprint(double u, double v, double 
 }
 
 MaskedFootprint DisplacementTexture::masked_footprint(double u, double v, double e1u, double e1v, double e2u,
-                                                     double e2v, double lambda) const
+                                                      double e2v, double lambda) const
 {
     const Data& d = *data_;
     const DisplacementFootprint plain = footprint(u, v, e1u, e1v, e2u, e2v);
@@ -354,9 +356,12 @@ MaskedFootprint DisplacementTexture::masked_footprint(double u, double v, double
     }
     out.g1 = table_weight * w + (1 - table_weight) * small_g1;
     const double mx = total[1] / w, my = total[2] / w;
-    const double raw_xx = table_weight * total[3] / w + (1 - table_weight) * (plain.slope_xx + plain.slope_x * plain.slope_x);
-    const double raw_yy = table_weight * total[4] / w + (1 - table_weight) * (plain.slope_yy + plain.slope_y * plain.slope_y);
-    const double raw_xy = table_weight * total[5] / w + (1 - table_weight) * (plain.slope_xy + plain.slope_x * plain.slope_y);
+    const double raw_xx = table_weight * total[3] / w +
+                          (1 - table_weight) * (plain.slope_xx + plain.slope_x * plain.slope_x);
+    const double raw_yy = table_weight * total[4] / w +
+                          (1 - table_weight) * (plain.slope_yy + plain.slope_y * plain.slope_y);
+    const double raw_xy = table_weight * total[5] / w +
+                          (1 - table_weight) * (plain.slope_xy + plain.slope_x * plain.slope_y);
     out.slope_x = table_weight * mx + (1 - table_weight) * plain.slope_x;
     out.slope_y = table_weight * my + (1 - table_weight) * plain.slope_y;
     out.slope_xx = std::max(0.0, raw_xx - out.slope_x * out.slope_x);

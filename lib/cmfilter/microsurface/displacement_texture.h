@@ -101,20 +101,20 @@
 namespace cmfilter {
 
 struct DisplacementOptions {
-    std::string path;            // any image OpenImageIO reads
-    std::string channel;         // a name or 0-based index; empty: the image must have one channel
+    std::string path;     // any image OpenImageIO reads
+    std::string channel;  // a name or 0-based index; empty: the image must have one channel
     NonFinitePolicy nonfinite = NonFinitePolicy::Error;
-    double height_scale = 1;     // texture units per texel value; finite, >= 0
-    int max_probes = 8;          // squares an anisotropic footprint is cut into; >= 1
-    int threads = 0;             // for baking the pyramid; 0: all cores
+    double height_scale = 1;  // texture units per texel value; finite, >= 0
+    int max_probes = 8;       // squares an anisotropic footprint is cut into; >= 1
+    int threads = 0;          // for baking the pyramid; 0: all cores
 };
 
 // What a footprint resolves and what it does not.
 struct DisplacementFootprint {
-    double mean_height = 0;                          // E[h], texture units
-    double sigma_h = 0;                              // sqrt(E[h^2] - E[h]^2)
-    double slope_x = 0, slope_y = 0;                 // resolved: E[s]
-    double slope_xx = 0, slope_xy = 0, slope_yy = 0; // unresolved: E[s s^T] - E[s] E[s]^T
+    double mean_height = 0;                           // E[h], texture units
+    double sigma_h = 0;                               // sqrt(E[h^2] - E[h]^2)
+    double slope_x = 0, slope_y = 0;                  // resolved: E[s]
+    double slope_xx = 0, slope_xy = 0, slope_yy = 0;  // unresolved: E[s s^T] - E[s] E[s]^T
     double lod = 0;  // log2 of the probes' width in texels, >= -64 (a point); 1e9 for infinite edges
 };
 
@@ -185,10 +185,10 @@ private:
         int n = 0;
         double height_scale = 1;
         int max_probes = 8;
-        double reference = 0;             // mean height, subtracted in the pyramid
-        std::vector<double> h, sx, sy;    // level 0, N x N, row-major
+        double reference = 0;                    // mean height, subtracted in the pyramid
+        std::vector<double> h, sx, sy;           // level 0, N x N, row-major
         std::vector<std::vector<float>> levels;  // kChannels interleaved; h about `reference`
-        PeriodicSummedArea table;  // of the texel squares' moments, kChannels
+        PeriodicSummedArea table;                // of the texel squares' moments, kChannels
         DisplacementMasking masking;
         MaskedSlopeTable masked;
     };

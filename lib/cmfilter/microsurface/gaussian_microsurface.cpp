@@ -17,7 +17,8 @@ Expected<GaussianMicrosurface> GaussianMicrosurface::create(const GaussianMicros
     if (o.cosines < 1)
         return bad_input("microsurface cosines " + std::to_string(o.cosines) + " is out of range (expected >= 1)");
     if (!(o.sigma_h >= 0) || !std::isfinite(o.sigma_h))
-        return bad_input("microsurface sigma_h " + std::to_string(o.sigma_h) + " is out of range (expected finite, >= 0)");
+        return bad_input("microsurface sigma_h " + std::to_string(o.sigma_h) +
+                         " is out of range (expected finite, >= 0)");
     if (!(o.min_wavelength > 0) || !std::isfinite(o.max_wavelength) || !(o.max_wavelength >= o.min_wavelength))
         return bad_input("microsurface wavelengths [" + std::to_string(o.min_wavelength) + ", " +
                          std::to_string(o.max_wavelength) + "] are out of range (expected 0 < min <= max, finite)");

@@ -26,10 +26,10 @@
 namespace cmfilter {
 
 struct GaussianMicrosurfaceOptions {
-    int cosines = 256;            // >= 1 (Gaussian heights need dozens)
-    double sigma_h = 0.05;        // height standard deviation, >= 0
-    double min_wavelength = 0.01; // > 0
-    double max_wavelength = 0.1;  // >= min_wavelength
+    int cosines = 256;             // >= 1 (Gaussian heights need dozens)
+    double sigma_h = 0.05;         // height standard deviation, >= 0
+    double min_wavelength = 0.01;  // > 0
+    double max_wavelength = 0.1;   // >= min_wavelength
     std::uint64_t seed = 1;
     // > 0: the period along x and y, >= max_wavelength; 0: not periodic.
     double tile = 0;

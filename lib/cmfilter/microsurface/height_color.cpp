@@ -46,7 +46,8 @@ Rgb exact_height_color(const ColorMap& map, double sigma_h, double lambda_sum, d
     // D_h in h (eq. 16): (L + 1) Phi(h / sigma_h)^L phi(h / sigma_h) / sigma_h.
     const auto weighted = [&](double h) {
         const double x = h / sigma_h;
-        const double density = std::exp(std::log(k1) + L * log_normal_cdf(x) - 0.5 * x * x) / (sigma_h * std::sqrt(2 * kPi));
+        const double density = std::exp(std::log(k1) + L * log_normal_cdf(x) - 0.5 * x * x) /
+                               (sigma_h * std::sqrt(2 * kPi));
         return density * map.evaluate(h + offset);
     };
     const double panel = std::min(0.25, (x_hi - x_lo) / 32) * sigma_h;

@@ -27,9 +27,8 @@ MicrosurfaceVisibility microsurface_visibility(const MicrosurfaceFootprint& foot
     v.lambda_i = smith_lambda_gaussian(d.theta_i, footprint.sigma_s(d.phi_i));
     v.lambda_sum = lambda_sum(v.lambda_o, v.lambda_i, d.phi_o - d.phi_i, masking);
     v.visibility = mean_visibility(v.lambda_o, v.lambda_i, d.phi_o - d.phi_i, masking);  // eq. 13
-    v.resolved_visibility =
-        resolved_visibility(footprint.mean_height, footprint.resolved_sigma_h,
-                            smith_lambda_gaussian(d.theta_i, footprint.resolved_sigma_s(d.phi_i)));
+    v.resolved_visibility = resolved_visibility(footprint.mean_height, footprint.resolved_sigma_h,
+                                                smith_lambda_gaussian(d.theta_i, footprint.resolved_sigma_s(d.phi_i)));
     return v;
 }
 
@@ -64,7 +63,7 @@ HeightAlbedo height_filtered_albedo(const ColorLayer& heights, const Microsurfac
     out.mean = footprint.mean_height + moments.mean;
     out.sigma = moments.sigma;
     out.colour = gaussian_albedo(heights, out.mean, out.sigma, counts);  // eq. 10
-    out.albedo = v * out.colour;                                          // eq. 14
+    out.albedo = v * out.colour;                                         // eq. 14
     return out;
 }
 

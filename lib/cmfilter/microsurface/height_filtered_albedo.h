@@ -62,11 +62,11 @@ MicrosurfaceVisibility microsurface_visibility(const MicrosurfaceFootprint& foot
                                                MaskingShadowing masking = MaskingShadowing::Uncorrelated);
 
 struct HeightAlbedo {
-    Rgb albedo;  // visibility * resolved_visibility * colour (naive: colour)
-    Rgb colour;  // <C_h, D_h> in the representation asked for, unshadowed
-    double mean = 0, sigma = 0;  // of the heights seen lit (the naive method: the resolved mean, sigma 0)
-    double lambda_sum = 0;       // Lambda_o + Lambda_i (or their correlated form) (eq. 3)
-    double visibility = 1;       // eq. 13
+    Rgb albedo;                      // visibility * resolved_visibility * colour (naive: colour)
+    Rgb colour;                      // <C_h, D_h> in the representation asked for, unshadowed
+    double mean = 0, sigma = 0;      // of the heights seen lit (the naive method: the resolved mean, sigma 0)
+    double lambda_sum = 0;           // Lambda_o + Lambda_i (or their correlated form) (eq. 3)
+    double visibility = 1;           // eq. 13
     double resolved_visibility = 1;  // V_r
 };
 

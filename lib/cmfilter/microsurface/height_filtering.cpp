@@ -14,10 +14,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 // d/dx ln Phi(x) = phi(x) / Phi(x).
-double normal_hazard_left(double x)
-{
-    return std::exp(-0.5 * x * x - 0.5 * std::log(2 * kPi) - log_normal_cdf(x));
-}
+double normal_hazard_left(double x) { return std::exp(-0.5 * x * x - 0.5 * std::log(2 * kPi) - log_normal_cdf(x)); }
 
 }  // namespace
 
@@ -52,7 +49,8 @@ HeightMoments exact_height_moments(double lambda_sum, double sigma_h)
     const auto w = [&](double x) { return std::exp(log_density(x) - g0); };
     const double m0 = gauss_legendre_8(w, lo, hi, 24);
     const double m1 = gauss_legendre_8([&](double x) { return (x - peak) * w(x); }, lo, hi, 24) / m0;
-    const double m2 = gauss_legendre_8([&](double x) { return (x - peak - m1) * (x - peak - m1) * w(x); }, lo, hi, 24) / m0;
+    const double m2 = gauss_legendre_8([&](double x) { return (x - peak - m1) * (x - peak - m1) * w(x); }, lo, hi, 24) /
+                      m0;
     return {s * (peak + m1), s * std::sqrt(std::max(0.0, m2))};
 }
 
@@ -60,8 +58,8 @@ HeightMoments paper_height_fit(double lambda_sum, double sigma_h)
 {
     const double L = std::min(std::max(0.0, std::isnan(lambda_sum) ? 0.0 : lambda_sum), 1e100);
     const double s = std::max(0.0, sigma_h);
-    return {0.39 * s * std::log(4.75 * L + 1.0),               // eq. 17
-            s / (1.0 + 0.26 * std::log(1.13 * L + 1.0))};        // eq. 18 (central)
+    return {0.39 * s * std::log(4.75 * L + 1.0),           // eq. 17
+            s / (1.0 + 0.26 * std::log(1.13 * L + 1.0))};  // eq. 18 (central)
 }
 
 }  // namespace cmfilter

@@ -18,8 +18,8 @@
 namespace cmfilter {
 
 struct HeightMomentTableOptions {
-    int nodes = 512;                // >= 2
-    double max_lambda_sum = 1e6;    // > 0, finite
+    int nodes = 512;              // >= 2
+    double max_lambda_sum = 1e6;  // > 0, finite
 };
 
 class HeightMomentTable {

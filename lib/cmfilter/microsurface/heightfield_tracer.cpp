@@ -21,7 +21,7 @@ struct Heightfield::Ray {
 };
 
 struct Heightfield::Crossing {
-    double t = 0;              // from the ray's start
+    double t = 0;                 // from the ray's start
     std::int64_t ix = 0, iy = 0;  // the texel crossed in
 };
 
@@ -113,7 +113,8 @@ Expected<std::vector<double>> tabulate_nodes(const GaussianMicrosurface& surface
     for (const GaussianMicrosurface::Cosine& c : surface.cosines()) {
         const double fi = c.fx * tile, fj = c.fy * tile;
         const double i = std::round(fi), j = std::round(fj);
-        if (std::abs(fi - i) > 1e-6 * std::max(1.0, std::abs(fi)) || std::abs(fj - j) > 1e-6 * std::max(1.0, std::abs(fj)))
+        if (std::abs(fi - i) > 1e-6 * std::max(1.0, std::abs(fi)) ||
+            std::abs(fj - j) > 1e-6 * std::max(1.0, std::abs(fj)))
             return bad_input("heightfield cosine frequency (" + std::to_string(c.fx) + ", " + std::to_string(c.fy) +
                              ") is off the tile's lattice (expected multiples of 1 / " + std::to_string(tile) + ")");
         const auto wrap = [n](double k) {
@@ -223,8 +224,8 @@ Expected<Heightfield> Heightfield::from_nodes(std::vector<double> heights, int n
             for (std::size_t i = 0; i < stride; ++i) {
                 const double value = grid[(j % n) * n + i % n];
                 if (!std::isfinite(value))
-                    return bad_input(std::string("heightfield node ") + what + " at (" + std::to_string(i % n) +
-                                     ", " + std::to_string(j % n) + ") is not finite (expected finite values)");
+                    return bad_input(std::string("heightfield node ") + what + " at (" + std::to_string(i % n) + ", " +
+                                     std::to_string(j % n) + ") is not finite (expected finite values)");
                 closed[j * stride + i] = value;
             }
         return closed;
@@ -363,7 +364,9 @@ std::optional<Heightfield::Crossing> Heightfield::walk(const Ray& r, double t_en
             face = fx;
             ix = r.du > 0 ? fx : fx - 1;
             if (ty == tx) iy = r.dv > 0 ? fy : fy - 1;
-            else iy = std::clamp(static_cast<std::int64_t>(std::floor(r.v + r.dv * te)), cy * size, cy * size + size - 1);
+            else
+                iy =
+                    std::clamp(static_cast<std::int64_t>(std::floor(r.v + r.dv * te)), cy * size, cy * size + size - 1);
         } else {
             face = fy;
             iy = r.dv > 0 ? fy : fy - 1;

@@ -54,10 +54,10 @@ struct HeightfieldOptions {
 };
 
 struct HeightfieldHit {
-    double t = 0;   // along the ray, in units of the direction's length
-    Vec3 point;     // origin + t direction
+    double t = 0;       // along the ray, in units of the direction's length
+    Vec3 point;         // origin + t direction
     double height = 0;  // point.z, the surface's height there
-    Vec3 normal;    // unit normal of the bilinear patch at the point, z > 0
+    Vec3 normal;        // unit normal of the bilinear patch at the point, z > 0
 };
 
 class Heightfield {
@@ -129,7 +129,7 @@ private:
     int top_level_ = 0;  // the coarsest mipmap level the walk starts from
     double tile_ = 0;
     double min_height_ = 0, max_height_ = 0;
-    std::vector<double> nodes_;  // (N + 1) x (N + 1), the last row and column repeating the first
+    std::vector<double> nodes_;              // (N + 1) x (N + 1), the last row and column repeating the first
     std::vector<double> slope_x_, slope_y_;  // the same for the slopes, when tabulated
     MaxMipmap mipmap_;
 };

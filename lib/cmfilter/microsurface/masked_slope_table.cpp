@@ -17,9 +17,8 @@ double lambda_at(int j) { return j == 0 ? 0.0 : std::ldexp(1.0, kLowestPower + j
 
 }  // namespace
 
-MaskedSlopeTable MaskedSlopeTable::build(
-    const std::function<void(double, double, double&, double&, double&)>& surface, int n,
-    const DisplacementMasking& masking)
+MaskedSlopeTable MaskedSlopeTable::build(const std::function<void(double, double, double&, double&, double&)>& surface,
+                                         int n, const DisplacementMasking& masking)
 {
     MaskedSlopeTable out;
     if (n < 1) return out;
@@ -86,7 +85,8 @@ MaskedMoments MaskedSlopeTable::blend(const double* channels, double lambda) con
         const double mx = c[1] / c[0], my = c[2] / c[0];
         const double xx = std::max(0.0, c[3] / c[0] - mx * mx), yy = std::max(0.0, c[4] / c[0] - my * my);
         const double bound = std::sqrt(xx * yy);
-        return std::array<double, 5>{mx, my, xx, yy, bound > 0 ? std::clamp((c[5] / c[0] - mx * my) / bound, -1.0, 1.0) : 0.0};
+        return std::array<double, 5>{mx, my, xx, yy,
+                                     bound > 0 ? std::clamp((c[5] / c[0] - mx * my) / bound, -1.0, 1.0) : 0.0};
     };
     const std::array<double, 5> l = central(lo), h = central(hi);
     const auto geometric = [&](double x, double y) {

@@ -50,8 +50,8 @@ public:
     MaskedSlopeTable() = default;
     // surface(u, v, h, sx, sy): the height and slopes at (u, v) in [0, 1)^2;
     // n texels per side; `masking` gives F.
-    static MaskedSlopeTable build(const std::function<void(double, double, double&, double&, double&)>& surface,
-                                  int n, const DisplacementMasking& masking);
+    static MaskedSlopeTable build(const std::function<void(double, double, double&, double&, double&)>& surface, int n,
+                                  const DisplacementMasking& masking);
 
     int cells() const { return table_.size(); }  // per side
     // The weighted means over the box [u0, u0 + wu] x [v0, v0 + wv] (texture

@@ -15,8 +15,8 @@ namespace {
 
 // <C_s, D_s> (eq. 20) for the slopes N(resolved mean, unresolved covariance)
 // seen from the view.
-Rgb slope_layer(const SlopeMap& map, const SlopeGaussian& slopes, const ResolvedSlope& slope,
-                const HeightDirections& d, const MicrosurfaceLayerOptions& options)
+Rgb slope_layer(const SlopeMap& map, const SlopeGaussian& slopes, const ResolvedSlope& slope, const HeightDirections& d,
+                const MicrosurfaceLayerOptions& options)
 {
     const ViewAngles view{d.theta_o, d.phi_o};
     // The mean of a (slope -> colour) function over D_s in the representation asked for.
@@ -52,10 +52,8 @@ DisplacementSlopeLayer sampled_displacement_layer(const MicrosurfaceColors& m, c
     DisplacementSlopeColorOptions o;
     o.masking = options.masking;
     o.shading = options.slope_shading;
-    if (!m.slope)
-        return displacement_slope_layer(texture, static_cast<const SteepnessColorMap*>(nullptr), piece, d, o);
-    return std::visit([&](const auto& map) { return displacement_slope_layer(texture, &map, piece, d, o); },
-                      *m.slope);
+    if (!m.slope) return displacement_slope_layer(texture, static_cast<const SteepnessColorMap*>(nullptr), piece, d, o);
+    return std::visit([&](const auto& map) { return displacement_slope_layer(texture, &map, piece, d, o); }, *m.slope);
 }
 
 // The Gaussian methods on a textured displacement: D_s fitted to the
@@ -96,8 +94,7 @@ MicrosurfaceLayers microsurface_layers(const MicrosurfaceColors& m, const Micros
     out.mean = f.mean_height;
     std::optional<Rgb> height, slope_color;
     if (m.height) {
-        const HeightAlbedo h =
-            height_filtered_albedo(*m.height, f, d, options.heights, table, counts, options.masking);
+        const HeightAlbedo h = height_filtered_albedo(*m.height, f, d, options.heights, table, counts, options.masking);
         height = h.colour;
         out.visibility = options.heights == HeightRepresentation::Naive ? 1.0 : h.visibility * h.resolved_visibility;
         out.mean = h.mean;
@@ -140,7 +137,7 @@ Rgb combine_microsurface_albedo(const ColorCombination& c, double mean_visibilit
 }
 
 Rgb combine_point_color(const ColorCombination& c, const std::optional<Rgb>& base, const std::optional<Rgb>& height,
-                         const std::optional<Rgb>& slope)
+                        const std::optional<Rgb>& slope)
 {
     if (c.mode == CombineMode::Sum) {
         Rgb out;

@@ -94,6 +94,6 @@ Rgb combine_microsurface_albedo(const ColorCombination& combine, double mean_vis
 // The material's colour at one point of the displaced surface (the
 // ray-traced methods): the combination of the layers present there.
 Rgb combine_point_color(const ColorCombination& combine, const std::optional<Rgb>& base,
-                         const std::optional<Rgb>& height, const std::optional<Rgb>& slope);
+                        const std::optional<Rgb>& height, const std::optional<Rgb>& slope);
 
 }  // namespace cmfilter

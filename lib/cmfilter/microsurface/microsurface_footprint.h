@@ -32,10 +32,10 @@
 namespace cmfilter {
 
 struct MicrosurfaceFootprint {
-    double mean_height = 0;                      // resolved: the box-filtered height at the centre
-    double sigma_h = 0;                          // unresolved height deviation
-    double slope_xx = 0, slope_xy = 0, slope_yy = 0;  // unresolved slope covariance S
-    double resolved_sigma_h = 0;                 // sigma_r
+    double mean_height = 0;                                    // resolved: the box-filtered height at the centre
+    double sigma_h = 0;                                        // unresolved height deviation
+    double slope_xx = 0, slope_xy = 0, slope_yy = 0;           // unresolved slope covariance S
+    double resolved_sigma_h = 0;                               // sigma_r
     double resolved_xx = 0, resolved_xy = 0, resolved_yy = 0;  // resolved slope covariance R
 
     // The unresolved slope deviation along the unit direction (cos a, sin a).

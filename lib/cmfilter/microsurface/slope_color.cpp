@@ -20,7 +20,7 @@ double standard_normal_density(double z) { return std::exp(-0.5 * z * z) / std::
 
 template <typename SlopeMap>
 Rgb gaussian_slope_color(const SlopeMap& map, const SlopeGaussian& slopes, const ViewAngles& view,
-                          const GaussianSlopeColorOptions& options)
+                         const GaussianSlopeColorOptions& options)
 {
     const SlopeMoments m = exact_slope_moments(slopes, view);
     // Principal axes of the covariance: angle a with tan 2a = 2 xy / (xx - yy),
@@ -45,7 +45,7 @@ Rgb gaussian_slope_color(const SlopeMap& map, const SlopeGaussian& slopes, const
 
 template <typename SlopeMap>
 Rgb exact_slope_color(const SlopeMap& map, const SlopeGaussian& slopes, const ViewAngles& view,
-                       const ExactSlopeColorOptions& options)
+                      const ExactSlopeColorOptions& options)
 {
     const int panels = std::max(1, options.panels);
     const SlopeViewFrame f = slope_view_frame(slopes, view);
@@ -73,7 +73,8 @@ Rgb exact_slope_color(const SlopeMap& map, const SlopeGaussian& slopes, const Vi
         // No weighting (D_s = p), or the limit at the horizon (slope_filtering.h).
         if (margin <= 0) return (1 / across_weight) * across(a / b);
         if (!(f.sigma_u > 0)) return (1 / across_weight) * across(f.mean_u);
-        return average(standard_normal_density, [&](double z) { return f.mean_u + f.sigma_u * z; }, -9.0, 9.0);
+        return average(
+            standard_normal_density, [&](double z) { return f.mean_u + f.sigma_u * z; }, -9.0, 9.0);
     }
     const double k = margin / scale;
     if (k >= 0) {
@@ -96,25 +97,25 @@ Rgb exact_slope_color(const SlopeMap& map, const SlopeGaussian& slopes, const Vi
 }
 
 template Rgb gaussian_slope_color(const SteepnessColorMap&, const SlopeGaussian&, const ViewAngles&,
-                                   const GaussianSlopeColorOptions&);
+                                  const GaussianSlopeColorOptions&);
 template Rgb gaussian_slope_color(const SlopeVectorColorMap&, const SlopeGaussian&, const ViewAngles&,
-                                   const GaussianSlopeColorOptions&);
+                                  const GaussianSlopeColorOptions&);
 template Rgb exact_slope_color(const SteepnessColorMap&, const SlopeGaussian&, const ViewAngles&,
-                                const ExactSlopeColorOptions&);
+                               const ExactSlopeColorOptions&);
 template Rgb exact_slope_color(const SlopeVectorColorMap&, const SlopeGaussian&, const ViewAngles&,
-                                const ExactSlopeColorOptions&);
+                               const ExactSlopeColorOptions&);
 // The light-weighted maps (light_weighted_slope_map.h).
 template Rgb gaussian_slope_color(const LightWeightedSlopeMap<SteepnessColorMap>&, const SlopeGaussian&,
-                                   const ViewAngles&, const GaussianSlopeColorOptions&);
+                                  const ViewAngles&, const GaussianSlopeColorOptions&);
 template Rgb gaussian_slope_color(const LightWeightedSlopeMap<SlopeVectorColorMap>&, const SlopeGaussian&,
-                                   const ViewAngles&, const GaussianSlopeColorOptions&);
+                                  const ViewAngles&, const GaussianSlopeColorOptions&);
 template Rgb gaussian_slope_color(const LightCosineSlopeMap&, const SlopeGaussian&, const ViewAngles&,
-                                   const GaussianSlopeColorOptions&);
-template Rgb exact_slope_color(const LightWeightedSlopeMap<SteepnessColorMap>&, const SlopeGaussian&,
-                                const ViewAngles&, const ExactSlopeColorOptions&);
+                                  const GaussianSlopeColorOptions&);
+template Rgb exact_slope_color(const LightWeightedSlopeMap<SteepnessColorMap>&, const SlopeGaussian&, const ViewAngles&,
+                               const ExactSlopeColorOptions&);
 template Rgb exact_slope_color(const LightWeightedSlopeMap<SlopeVectorColorMap>&, const SlopeGaussian&,
-                                const ViewAngles&, const ExactSlopeColorOptions&);
+                               const ViewAngles&, const ExactSlopeColorOptions&);
 template Rgb exact_slope_color(const LightCosineSlopeMap&, const SlopeGaussian&, const ViewAngles&,
-                                const ExactSlopeColorOptions&);
+                               const ExactSlopeColorOptions&);
 
 }  // namespace cmfilter

@@ -45,19 +45,19 @@ struct ExactSlopeColorOptions {
 // instantiations slope_color.cpp provides.
 template <typename SlopeMap>
 Rgb gaussian_slope_color(const SlopeMap& map, const SlopeGaussian& slopes, const ViewAngles& view,
-                          const GaussianSlopeColorOptions& options = {});
+                         const GaussianSlopeColorOptions& options = {});
 
 template <typename SlopeMap>
 Rgb exact_slope_color(const SlopeMap& map, const SlopeGaussian& slopes, const ViewAngles& view,
-                       const ExactSlopeColorOptions& options = {});
+                      const ExactSlopeColorOptions& options = {});
 
 extern template Rgb gaussian_slope_color(const SteepnessColorMap&, const SlopeGaussian&, const ViewAngles&,
-                                          const GaussianSlopeColorOptions&);
+                                         const GaussianSlopeColorOptions&);
 extern template Rgb gaussian_slope_color(const SlopeVectorColorMap&, const SlopeGaussian&, const ViewAngles&,
-                                          const GaussianSlopeColorOptions&);
+                                         const GaussianSlopeColorOptions&);
 extern template Rgb exact_slope_color(const SteepnessColorMap&, const SlopeGaussian&, const ViewAngles&,
-                                       const ExactSlopeColorOptions&);
+                                      const ExactSlopeColorOptions&);
 extern template Rgb exact_slope_color(const SlopeVectorColorMap&, const SlopeGaussian&, const ViewAngles&,
-                                       const ExactSlopeColorOptions&);
+                                      const ExactSlopeColorOptions&);
 
 }  // namespace cmfilter

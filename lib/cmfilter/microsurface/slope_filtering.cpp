@@ -162,8 +162,8 @@ Status validate(const SlopeGaussian& slopes, const std::string& what)
     }
     if (slopes.xy * slopes.xy > slopes.xx * slopes.yy * (1 + 1e-12)) {
         std::ostringstream msg;
-        msg << what << ": slope covariance xy = " << slopes.xy << " exceeds sqrt(xx yy) = "
-            << std::sqrt(slopes.xx * slopes.yy) << " (not positive semi-definite)";
+        msg << what << ": slope covariance xy = " << slopes.xy
+            << " exceeds sqrt(xx yy) = " << std::sqrt(slopes.xx * slopes.yy) << " (not positive semi-definite)";
         return bad_input(msg.str());
     }
     return ok();

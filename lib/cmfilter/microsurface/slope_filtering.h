@@ -62,11 +62,11 @@ struct SlopeMoments {
 // alone, so D_s changes u's law and keeps v's given u.
 struct SlopeViewFrame {
     double cos_theta = 1, sin_theta = 0;
-    double dx = 1, dy = 0;                  // d; e = (-dy, dx)
-    double mean_u = 0, mean_v = 0;          // <m, d>, <m, e>
-    double sigma_u = 0;                     // sqrt(d^T Sigma d)
-    double regression = 0;                  // d^T Sigma e / d^T Sigma d (0 where sigma_u = 0)
-    double residual_variance = 0;           // det Sigma / d^T Sigma d (e^T Sigma e where sigma_u = 0)
+    double dx = 1, dy = 0;          // d; e = (-dy, dx)
+    double mean_u = 0, mean_v = 0;  // <m, d>, <m, e>
+    double sigma_u = 0;             // sqrt(d^T Sigma d)
+    double regression = 0;          // d^T Sigma e / d^T Sigma d (0 where sigma_u = 0)
+    double residual_variance = 0;   // det Sigma / d^T Sigma d (e^T Sigma e where sigma_u = 0)
     // The slope back in x and y from its coordinates (u, v).
     double slope_x(double u, double v) const { return u * dx - v * dy; }
     double slope_y(double u, double v) const { return u * dy + v * dx; }

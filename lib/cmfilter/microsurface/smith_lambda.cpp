@@ -19,7 +19,7 @@ double smith_lambda_gaussian_cot(double mu, double sigma_s)
 {
     if (!(mu >= 0) || std::isinf(mu)) return 0.0;  // theta = 0 (or no direction): nothing masked
     if (mu == 0) return std::numeric_limits<double>::infinity();
-    if (!(sigma_s > 0)) return 0.0;                  // a flat surface masks nothing below 90 degrees
+    if (!(sigma_s > 0)) return 0.0;  // a flat surface masks nothing below 90 degrees
     // Eq. 3 with a = mu / (sqrt(2) sigma_s):
     //   Lambda = (e^{-a^2} / (a sqrt(pi)) - erfc(a)) / 2
     //          = e^{-a^2} (1 / (a sqrt(pi)) - erfcx(a)) / 2,

@@ -90,7 +90,8 @@ Expected<BoxCorrelation> measure_box_correlation(const std::function<double(doub
     double mean = 0;
     for (int j = 0; j < m; ++j)
         for (int i = 0; i < m; ++i) {
-            const std::size_t p = static_cast<std::size_t>(j) * static_cast<std::size_t>(m) + static_cast<std::size_t>(i);
+            const std::size_t p = static_cast<std::size_t>(j) * static_cast<std::size_t>(m) +
+                                  static_cast<std::size_t>(i);
             x[p] = (i + unit_interval(splitmix64(state))) * cell;
             y[p] = (j + unit_interval(splitmix64(state))) * cell;
             ux[p] = unit_interval(splitmix64(state)) - 0.5;

@@ -76,10 +76,10 @@ private:
     double tapered_spline(double log2_k) const;
 
     std::vector<double> beta_;
-    double taper_start_ = 0;      // log2 k where the taper begins; it ends half an octave later
-    double end_log2_ = 0;       // taper_start_ + 0.5: beta = 0 from here
-    double dense_last_ = 0;     // the last interpolation index: dense_.size() - 2
-    std::vector<double> dense_; // beta every 1/64 octave from dense_first_log2 to past end_log2_
+    double taper_start_ = 0;     // log2 k where the taper begins; it ends half an octave later
+    double end_log2_ = 0;        // taper_start_ + 0.5: beta = 0 from here
+    double dense_last_ = 0;      // the last interpolation index: dense_.size() - 2
+    std::vector<double> dense_;  // beta every 1/64 octave from dense_first_log2 to past end_log2_
 };
 
 // beta of an arbitrary stationary term by Monte-Carlo (for turbulence's |n|

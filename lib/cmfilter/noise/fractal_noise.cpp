@@ -11,8 +11,7 @@ namespace cmfilter {
 
 const char* to_string(FractalSum sum) { return sum == FractalSum::Fbm ? "fbm" : "turbulence"; }
 
-double measure_mean_abs(const std::function<double(double, double)>& evaluate, double period,
-                        int samples_per_axis)
+double measure_mean_abs(const std::function<double(double, double)>& evaluate, double period, int samples_per_axis)
 {
     const double side = 256.0 * period;
     const double cell = side / samples_per_axis;
@@ -44,10 +43,10 @@ Expected<FractalNoise> FractalNoise::create(BaseNoise base, const FractalOptions
     auto& known = o.sum == FractalSum::Fbm ? f.base_.correlation : f.base_.correlation_abs;
     if (!known) {
         auto evaluate = f.base_.evaluate;
-        auto term = o.sum == FractalSum::Fbm
-                        ? std::function<double(double, double)>(evaluate)
-                        : std::function<double(double, double)>(
-                              [evaluate](double x, double y) { return std::fabs(evaluate(x, y)); });
+        auto term = o.sum == FractalSum::Fbm ? std::function<double(double, double)>(evaluate)
+                                             : std::function<double(double, double)>([evaluate](double x, double y) {
+                                                   return std::fabs(evaluate(x, y));
+                                               });
         auto measured = measure_box_correlation(term, f.base_.period);
         if (!measured) return measured.error();
         known = std::move(*measured);
@@ -84,15 +83,9 @@ double FractalNoise::operator()(double x, double y) const
     return sum;
 }
 
-double FractalNoise::octave_mean() const
-{
-    return options_.sum == FractalSum::Fbm ? base_.mean : base_.mean_abs;
-}
+double FractalNoise::octave_mean() const { return options_.sum == FractalSum::Fbm ? base_.mean : base_.mean_abs; }
 
-double FractalNoise::resolved_fraction(int i, double w) const
-{
-    return (*correlation_)(w / octave_period(i));
-}
+double FractalNoise::resolved_fraction(int i, double w) const { return (*correlation_)(w / octave_period(i)); }
 
 double FractalNoise::mean_over_footprint(double x, double y, double w) const
 {
@@ -109,8 +102,7 @@ double FractalNoise::mean_over_footprint_log2(double x, double y, double log2_w)
     for (int i = 0; i < options_.octaves; ++i) {
         const double log2_k = log2_w - log2_periods_[static_cast<std::size_t>(i)];
         double term = mu;  // past the cutoff: averaged away, and not evaluated
-        if (log2_k < log2_cutoff_)
-            term = mu + correlation_->at_log2(log2_k) * (octave(i, x, y) - mu);
+        if (log2_k < log2_cutoff_) term = mu + correlation_->at_log2(log2_k) * (octave(i, x, y) - mu);
         sum += octave_amplitude(i) * term;
     }
     return sum;

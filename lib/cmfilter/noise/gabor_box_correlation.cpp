@@ -22,8 +22,9 @@ BoxCorrelation gabor_noise_box_correlation(const GaborNoiseOptions& options)
     auto envelope_cosine = [&](double theta, double h) {
         const double end = std::min(h, reach);
         const int panels = std::max(1, static_cast<int>(std::ceil(end / panel)));
-        return 2.0 * gauss_legendre_8([&](double t) { return std::exp(-0.5 * pi * a * a * t * t) * std::cos(theta * t); },
-                                      0.0, end, panels);
+        return 2.0 *
+               gauss_legendre_8([&](double t) { return std::exp(-0.5 * pi * a * a * t * t) * std::cos(theta * t); },
+                                0.0, end, panels);
     };
 
     std::vector<double> samples(BoxCorrelation::grid_count);
@@ -37,15 +38,15 @@ BoxCorrelation gabor_noise_box_correlation(const GaborNoiseOptions& options)
         } else {
             oscillating = gauss_legendre_8(
                               [&](double phi) {
-                                  return envelope_cosine(theta * std::cos(phi), h) *
-                                         envelope_cosine(theta * std::sin(phi), h);
+                return envelope_cosine(theta * std::cos(phi), h) * envelope_cosine(theta * std::sin(phi), h);
                               },
                               0.0, 0.5 * pi, 4) /
-                          (0.5 * pi);
+                (0.5 * pi);
         }
         const double flat = envelope_cosine(0.0, h);
         const double area = 4.0 * h * h;
-        samples[static_cast<std::size_t>(j)] = std::clamp((oscillating + e * flat * flat) / ((1.0 + e) * area), -1.0, 1.0);
+        samples[static_cast<std::size_t>(j)] =
+            std::clamp((oscillating + e * flat * flat) / ((1.0 + e) * area), -1.0, 1.0);
     }
     return *BoxCorrelation::from_grid(std::move(samples));
 }

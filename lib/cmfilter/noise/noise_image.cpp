@@ -26,8 +26,8 @@ struct Rendered {
 Expected<Rendered> render(const NoiseImageOptions& options)
 {
     if (options.width < 1 || options.width > 65536 || options.height < 1 || options.height > 65536)
-        return bad_input("noise image size " + std::to_string(options.width) + " x " +
-                         std::to_string(options.height) + " is out of range (expected 1..65536 each)");
+        return bad_input("noise image size " + std::to_string(options.width) + " x " + std::to_string(options.height) +
+                         " is out of range (expected 1..65536 each)");
     if (!(options.scale > 0) || !std::isfinite(options.scale))
         return bad_input("noise image scale " + std::to_string(options.scale) +
                          " is invalid (expected a finite value > 0 noise units per pixel)");
@@ -69,9 +69,8 @@ Status write_noise_image(const std::string& path, const NoiseImageOptions& optio
     spec.attribute("cmfilter:format_version", kFormatVersion);
     spec.attribute("cmfilter:version", version());
     spec.attribute("cmfilter:noise", to_string(options.spec));
-    spec.attribute("cmfilter:layout",
-                   "data, no colour space; pixel (i, j) = noise(scale (i + 1/2), scale (j + 1/2)), "
-                   "row 0 at the top");
+    spec.attribute("cmfilter:layout", "data, no colour space; pixel (i, j) = noise(scale (i + 1/2), scale (j + 1/2)), "
+                                      "row 0 at the top");
     set_double_attribute(spec, "cmfilter:scale", options.scale);
     set_double_attribute(spec, "cmfilter:base_period", rendered->noise.base_period());
 

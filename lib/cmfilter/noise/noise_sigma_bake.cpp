@@ -37,8 +37,8 @@ int box_side(int samples)
 const char* to_string(FootprintShape shape) { return shape == FootprintShape::Box ? "box" : "gaussian"; }
 
 std::vector<FootprintMoments> sample_footprints(const FractalNoise& noise, FootprintShape shape, double width,
-                                                int samples_per_footprint, std::uint64_t seed,
-                                                std::uint64_t stream, int first, int count, int threads)
+                                                int samples_per_footprint, std::uint64_t seed, std::uint64_t stream,
+                                                int first, int count, int threads)
 {
     std::vector<FootprintMoments> out(static_cast<std::size_t>(std::max(count, 0)));
     const double domain = kDomainPeriods * noise.base_period();
@@ -85,7 +85,8 @@ std::vector<FootprintMoments> sample_footprints(const FractalNoise& noise, Footp
             double var_m = 0;
             for (int j = 0; j < n; ++j)
                 for (int i = 0; i + 1 < n; i += 2) {
-                    const double d = f[static_cast<std::size_t>(j * n + i)] - f[static_cast<std::size_t>(j * n + i + 1)];
+                    const double d = f[static_cast<std::size_t>(j * n + i)] -
+                                     f[static_cast<std::size_t>(j * n + i + 1)];
                     var_m += d * d;
                 }
             var_m /= static_cast<double>(s) * s;
@@ -202,8 +203,8 @@ Expected<NoiseSigmaBake> bake_noise_sigma(const FractalNoise& noise, const Noise
             int want = options.initial_footprints;
             for (;;) {
                 const int have = static_cast<int>(fps.size());
-                auto more = sample_footprints(noise, shape, width, s, options.seed, stream, have, want - have,
-                                              options.threads);
+                auto more =
+                    sample_footprints(noise, shape, width, s, options.seed, stream, have, want - have, options.threads);
                 fps.insert(fps.end(), more.begin(), more.end());
                 e = estimate_sigma(fps, s);
                 const double target = options.relative_half_width * e.sigma;

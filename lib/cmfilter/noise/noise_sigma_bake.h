@@ -49,32 +49,32 @@ struct FootprintMoments {
 // key: the bake uses the LOD index and shape), width w, S samples each (for
 // the box S is rounded down to the square of an even number, at least 4).
 std::vector<FootprintMoments> sample_footprints(const FractalNoise& noise, FootprintShape shape, double width,
-                                                int samples_per_footprint, std::uint64_t seed,
-                                                std::uint64_t stream, int first, int count, int threads);
+                                                int samples_per_footprint, std::uint64_t seed, std::uint64_t stream,
+                                                int first, int count, int threads);
 
 struct SigmaEstimate {
-    double sigma = 0;           // sqrt(mean within-footprint variance)
-    double half_width = 0;      // of sigma's 95% confidence interval
-    double mean_variance = 0;   // V
+    double sigma = 0;                // sqrt(mean within-footprint variance)
+    double half_width = 0;           // of sigma's 95% confidence interval
+    double mean_variance = 0;        // V
     double variance_half_width = 0;  // 1.96 sd(v) / sqrt(F)
-    int footprints = 0;         // F
-    int samples_per_footprint = 0;  // S
+    int footprints = 0;              // F
+    int samples_per_footprint = 0;   // S
 };
 
 // The estimate and its confidence interval from per-footprint variances.
 SigmaEstimate estimate_sigma(const std::vector<FootprintMoments>& footprints, int samples_per_footprint);
 
 struct NoiseSigmaBakeOptions {
-    double lod_step = 0.25;            // > 0; docs/bake-noise.md for why 0.25
-    double lod_last = 2.0;             // footprints up to 4 base periods
-    double finest_fraction = 1.0 / 16; // first LOD: 1/16 of the finest octave's period
-    int samples_per_footprint = 64;    // S (box: 8 x 8 strata)
-    int initial_footprints = 1024;     // F to start with
-    int max_footprints = 1 << 16;      // cap on F
-    double relative_half_width = 0.005;  // target: CI half-width <= 0.5% of sigma
-    int global_samples = 1 << 20;      // independent samples for the global statistics
-    std::uint64_t seed = 1;            // sampling seed (the noise has its own)
-    int threads = 0;                   // 0: all cores
+    double lod_step = 0.25;                // > 0; docs/bake-noise.md for why 0.25
+    double lod_last = 2.0;                 // footprints up to 4 base periods
+    double finest_fraction = 1.0 / 16;     // first LOD: 1/16 of the finest octave's period
+    int samples_per_footprint = 64;        // S (box: 8 x 8 strata)
+    int initial_footprints = 1024;         // F to start with
+    int max_footprints = 1 << 16;          // cap on F
+    double relative_half_width = 0.005;    // target: CI half-width <= 0.5% of sigma
+    int global_samples = 1 << 20;          // independent samples for the global statistics
+    std::uint64_t seed = 1;                // sampling seed (the noise has its own)
+    int threads = 0;                       // 0: all cores
     std::function<void(double)> progress;  // fraction done, may be empty
 };
 

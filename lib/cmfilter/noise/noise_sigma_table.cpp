@@ -8,7 +8,8 @@ namespace cmfilter {
 
 Expected<NoiseSigmaTable> NoiseSigmaTable::create(double lod_first, double lod_step, std::vector<double> sigmas)
 {
-    if (!std::isfinite(lod_first)) return bad_input("noise sigma table: first LOD must be finite, got " + std::to_string(lod_first));
+    if (!std::isfinite(lod_first))
+        return bad_input("noise sigma table: first LOD must be finite, got " + std::to_string(lod_first));
     if (!(lod_step > 0) || !std::isfinite(lod_step))
         return bad_input("noise sigma table: LOD step must be positive and finite, got " + std::to_string(lod_step));
     if (sigmas.empty()) return bad_input("noise sigma table: no sigma values");

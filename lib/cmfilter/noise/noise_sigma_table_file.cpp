@@ -38,8 +38,8 @@ std::string join_counts(const NoiseSigmaBake& bake, Get get)
 
 }  // namespace
 
-Status write_noise_sigma_table(const std::string& path, const NoiseSigmaBake& bake,
-                               const std::string& noise_spec, double base_period)
+Status write_noise_sigma_table(const std::string& path, const NoiseSigmaBake& bake, const std::string& noise_spec,
+                               double base_period)
 {
     if (bake.rows.empty()) return bad_input("noise sigma table '" + path + "' has no LODs");
     auto out = AtomicOutput::begin(path);
@@ -90,11 +90,10 @@ Status write_noise_sigma_csv(const std::string& path, const NoiseSigmaBake& bake
         csv << "lod,width,box_sigma,box_ci,box_footprints,box_samples,gaussian_sigma,gaussian_ci,"
                "gaussian_footprints,gaussian_samples\n";
         for (const auto& r : bake.rows)
-            csv << shortest(r.lod) << ',' << shortest(base_period * std::exp2(r.lod)) << ','
-                << shortest(r.box.sigma) << ',' << shortest(r.box.half_width) << ',' << r.box.footprints << ','
-                << r.box.samples_per_footprint << ',' << shortest(r.gaussian.sigma) << ','
-                << shortest(r.gaussian.half_width) << ',' << r.gaussian.footprints << ','
-                << r.gaussian.samples_per_footprint << '\n';
+            csv << shortest(r.lod) << ',' << shortest(base_period * std::exp2(r.lod)) << ',' << shortest(r.box.sigma)
+                << ',' << shortest(r.box.half_width) << ',' << r.box.footprints << ',' << r.box.samples_per_footprint
+                << ',' << shortest(r.gaussian.sigma) << ',' << shortest(r.gaussian.half_width) << ','
+                << r.gaussian.footprints << ',' << r.gaussian.samples_per_footprint << '\n';
         if (!csv.flush()) return io_error("cannot write '" + path + "'");
     }
     return out->commit();
@@ -111,9 +110,9 @@ Expected<LoadedNoiseSigmaTable> read_noise_sigma_table(const std::string& path, 
         return st.error();
     const int lods = spec.get_int_attribute("cmfilter:lods", 0);
     if (image->channels != kChannels || image->height != 1 || lods != image->width)
-        return bad_input("'" + path + "' has inconsistent cmfilter metadata (" + std::to_string(lods) +
-                         " LODs for " + std::to_string(image->width) + " x " + std::to_string(image->height) +
-                         " pixels of " + std::to_string(image->channels) + " channels)");
+        return bad_input("'" + path + "' has inconsistent cmfilter metadata (" + std::to_string(lods) + " LODs for " +
+                         std::to_string(image->width) + " x " + std::to_string(image->height) + " pixels of " +
+                         std::to_string(image->channels) + " channels)");
     // OpenEXR stores channels sorted by name: find the column by its name.
     const std::string want = std::string(to_string(shape)) + "_sigma";
     int c = -1;
@@ -121,8 +120,7 @@ Expected<LoadedNoiseSigmaTable> read_noise_sigma_table(const std::string& path, 
         if (image->channel_names[static_cast<std::size_t>(i)] == want) c = i;
     if (c < 0) return bad_input("'" + path + "' has no channel " + want);
     std::vector<double> sigmas;
-    for (int k = 0; k < image->width; ++k)
-        sigmas.push_back(image->pixels[static_cast<std::size_t>(k * kChannels + c)]);
+    for (int k = 0; k < image->width; ++k) sigmas.push_back(image->pixels[static_cast<std::size_t>(k * kChannels + c)]);
     auto table = NoiseSigmaTable::create(double_attribute(spec, "cmfilter:lod_first"),
                                          double_attribute(spec, "cmfilter:lod_step"), std::move(sigmas));
     if (!table) return bad_input("'" + path + "': " + table.error().message);

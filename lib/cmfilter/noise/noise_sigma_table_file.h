@@ -20,8 +20,8 @@ inline constexpr const char* kNoiseSigmaTableKind = "noise-sigma-table";
 
 // `noise_spec` is the spec's text form (noise_spec.h); `base_period` the
 // noise's p_0, recorded so a reader can turn widths into LODs.
-Status write_noise_sigma_table(const std::string& path, const NoiseSigmaBake& bake,
-                               const std::string& noise_spec, double base_period);
+Status write_noise_sigma_table(const std::string& path, const NoiseSigmaBake& bake, const std::string& noise_spec,
+                               double base_period);
 
 // Header "lod,width,box_sigma,box_ci,box_footprints,box_samples,gaussian_sigma,
 // gaussian_ci,gaussian_footprints,gaussian_samples", one row per LOD,

@@ -76,8 +76,7 @@ Expected<SpecText> split_spec(const std::string& text)
         const auto comma = rest.find(',', start);
         const std::string item = rest.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
         const auto eq = item.find('=');
-        if (eq == std::string::npos || eq == 0)
-            return bad_input("noise parameter '" + item + "' is not key=value");
+        if (eq == std::string::npos || eq == 0) return bad_input("noise parameter '" + item + "' is not key=value");
         const std::string key = item.substr(0, eq);
         if (!seen.insert(key).second) return bad_input("noise parameter " + key + " is given twice");
         out.pairs.emplace_back(key, item.substr(eq + 1));
@@ -103,9 +102,9 @@ bool operator==(const NoiseSpec& a, const NoiseSpec& b)
     const FractalOptions &fa = a.fractal_options, &fb = b.fractal_options;
     const GaborNoiseOptions &ga = a.gabor, &gb = b.gabor;
     return a.basis == b.basis && a.fractal == b.fractal && a.seed == b.seed && fa.octaves == fb.octaves &&
-           fa.lacunarity == fb.lacunarity && fa.gain == fb.gain && fa.sum == fb.sum &&
-           ga.amplitude == gb.amplitude && ga.bandwidth == gb.bandwidth && ga.frequency == gb.frequency &&
-           ga.orientation == gb.orientation && ga.impulse_density == gb.impulse_density;
+           fa.lacunarity == fb.lacunarity && fa.gain == fb.gain && fa.sum == fb.sum && ga.amplitude == gb.amplitude &&
+           ga.bandwidth == gb.bandwidth && ga.frequency == gb.frequency && ga.orientation == gb.orientation &&
+           ga.impulse_density == gb.impulse_density;
 }
 
 Expected<NoiseSpec> parse_noise_spec(const std::string& text)
@@ -138,13 +137,12 @@ Expected<NoiseSpec> parse_noise_spec(const std::string& text)
             continue;
         }
         const bool fractal_key = key == "octaves" || key == "lacunarity" || key == "gain";
-        const bool gabor_key = key == "amplitude" || key == "bandwidth" || key == "frequency" ||
-                               key == "orientation" || key == "density";
+        const bool gabor_key = key == "amplitude" || key == "bandwidth" || key == "frequency" || key == "orientation" ||
+                               key == "density";
         if ((fractal_key && !spec.fractal) || (gabor_key && spec.basis != NoiseBasis::Gabor) ||
             (!fractal_key && !gabor_key))
             return bad_input("noise parameter " + key + " does not apply to '" + split->kind +
-                             (spec.fractal ? std::string(" with base ") + to_string(spec.basis) : std::string()) +
-                             "'");
+                             (spec.fractal ? std::string(" with base ") + to_string(spec.basis) : std::string()) + "'");
         auto number = parse_number(key, value);
         if (!number) return number.error();
         const double v = *number;

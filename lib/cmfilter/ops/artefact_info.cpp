@@ -21,28 +21,32 @@ std::string describe_kind(const std::string& kind, int width, int height)
 {
     if (kind == kGaussianColorTableKind)
         return "prefiltered colour-map table T(v, sigma) = (C0 * N(0, sigma^2))(v) (Heitz et al. "
-               "2013, eq. 10): " + std::to_string(width) + " value nodes x " +
-               std::to_string(height) + " sigma nodes, scene-linear RGB";
+               "2013, eq. 10): " +
+               std::to_string(width) + " value nodes x " + std::to_string(height) + " sigma nodes, scene-linear RGB";
     if (kind == kMomentPyramidKind)
-        return "moment pyramid of a driver f (Heitz et al. 2013, sec. 4.2): " +
-               std::to_string(width) + " x " + std::to_string(height) +
+        return "moment pyramid of a driver f (Heitz et al. 2013, sec. 4.2): " + std::to_string(width) + " x " +
+               std::to_string(height) +
                " level 0, tiled MIP-map; channels m1, m2 = box means of (f - c) and (f - c)^2 "
                "about the reference value c; mean = c + m1, variance = max(0, m2 - m1^2)";
     if (kind == kHistogramPyramidKind)
         return "histogram pyramid of a driver with few distinct values (Heitz et al. 2013, sec. "
-               "4.1, exact solutions): " + std::to_string(width) + " x " + std::to_string(height) +
+               "4.1, exact solutions): " +
+               std::to_string(width) + " x " + std::to_string(height) +
                " level 0, tiled MIP-map; channel b = fraction of the footprint where f = v_b "
                "(cmfilter:values)";
     if (kind == kFilteredImageKind)
-        return "filtered colour image of a colour-mapped driver (cmfilter apply): " +
-               std::to_string(width) + " x " + std::to_string(height) + " RGB";
+        return "filtered colour image of a colour-mapped driver (cmfilter apply): " + std::to_string(width) + " x " +
+               std::to_string(height) + " RGB";
     if (kind == kNoiseImageKind)
         return "procedural noise driver (cmfilter noise-image): " + std::to_string(width) + " x " +
-               std::to_string(height) + ", channel Y = the noise (cmfilter:noise) at pixel centres, "
+               std::to_string(height) +
+               ", channel Y = the noise (cmfilter:noise) at pixel centres, "
                "data (no colour space)";
     if (kind == kNoiseSigmaTableKind)
         return "noise sigma table (Heitz et al. 2013, sec. 4.2: the noise standard deviation per level "
-               "of detail, a 1D texture): " + std::to_string(width) + " LODs from cmfilter:lod_first in "
+               "of detail, a 1D texture): " +
+               std::to_string(width) +
+               " LODs from cmfilter:lod_first in "
                "steps of cmfilter:lod_step; channels box_sigma, gaussian_sigma (unresolved standard "
                "deviation inside a box of width w = base_period 2^LOD / a Gaussian of standard deviation "
                "w/2) and box_ci, gaussian_ci (95% confidence half-widths)";
@@ -87,7 +91,8 @@ Expected<ArtefactInfo> read_artefact_info(const std::string& path)
         info.parameters.emplace_back(key, format_value(p));
     }
     if (info.kind.empty())
-        return bad_input("'" + path + "' is an image but not a cmfilter artefact (no cmfilter:kind "
+        return bad_input("'" + path +
+                         "' is an image but not a cmfilter artefact (no cmfilter:kind "
                          "metadata)");
     info.description = describe_kind(info.kind, info.width, info.height);
     return info;

@@ -28,8 +28,8 @@ Status write_heatmap_png(const std::string& path, const HeatmapImage& image)
     if (auto st = check_output_path(path, ".png"); !st) return st;
     const std::size_t n = static_cast<std::size_t>(image.width) * image.height;
     if (!image.errors || image.errors->size() != n)
-        return runtime_error("heat map of " + std::to_string(image.width) + " x " +
-                             std::to_string(image.height) + " pixels was given the wrong number of errors");
+        return runtime_error("heat map of " + std::to_string(image.width) + " x " + std::to_string(image.height) +
+                             " pixels was given the wrong number of errors");
     std::vector<unsigned char> codes(3 * n);
     for (std::size_t i = 0; i < n; ++i) {
         const Rgb8 c = heatmap_color((*image.errors)[i], image.max);
@@ -43,8 +43,8 @@ Status write_heatmap_png(const std::string& path, const HeatmapImage& image)
     if (!image.description.empty()) spec.attribute("ImageDescription", image.description);
     auto writer = OIIO::ImageOutput::create(out->temp_path());
     if (!writer) return runtime_error("OpenImageIO cannot write PNG: " + OIIO::geterror());
-    if (!writer->open(out->temp_path(), spec) ||
-        !writer->write_image(OIIO::TypeDesc::UINT8, codes.data()) || !writer->close()) {
+    if (!writer->open(out->temp_path(), spec) || !writer->write_image(OIIO::TypeDesc::UINT8, codes.data()) ||
+        !writer->close()) {
         std::string why = writer->geterror();
         return io_error("cannot write '" + path + "': " + why);
     }

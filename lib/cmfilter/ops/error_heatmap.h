@@ -26,8 +26,8 @@ struct HeatmapImage {
     int width = 0;
     int height = 0;
     const std::vector<double>* errors = nullptr;  // width * height, row-major, top row first
-    double max = 10.0;                             // error drawn as white
-    std::string description;                       // stored as the PNG's ImageDescription
+    double max = 10.0;                            // error drawn as white
+    std::string description;                      // stored as the PNG's ImageDescription
 };
 
 // Writes the heat map atomically (temporary file, then rename) to `path`, a

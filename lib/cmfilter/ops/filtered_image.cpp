@@ -34,8 +34,7 @@ std::string format_number(double v)
 // Level-0 driver texels outside [vmin, vmax], from the moments' m1 channel:
 // f = c + m1, where float32 storage of f - c leaves an error of at most half
 // an ulp of m1 (2^-24 |m1|); a texel counts as outside only beyond that.
-Expected<std::size_t> count_outside(const std::string& path, const MomentPyramidInfo& info,
-                                    double vmin, double vmax)
+Expected<std::size_t> count_outside(const std::string& path, const MomentPyramidInfo& info, double vmin, double vmax)
 {
     auto in = open_image_input(path);
     if (!in) return in.error();
@@ -52,17 +51,17 @@ Expected<std::size_t> count_outside(const std::string& path, const MomentPyramid
 
 // The driver a moment pyramid was baked from (reference), read the same way
 // and checked against the recorded hash.
-Expected<DriverImage> read_source_driver(const ApplyOptions& options, const MomentPyramidInfo& info,
-                                         std::string& path, std::vector<std::string>& warnings,
-                                         int threads)
+Expected<DriverImage> read_source_driver(const ApplyOptions& options, const MomentPyramidInfo& info, std::string& path,
+                                         std::vector<std::string>& warnings, int threads)
 {
     const bool overridden = !options.driver_path.empty();
     path = overridden ? options.driver_path : info.source;
     std::error_code ec;
     if (!overridden && !std::filesystem::is_regular_file(path, ec))
-        return io_error("cannot read driver '" + path + "' recorded in '" + options.moments_path +
-                        "' (cmfilter:source): no such file; pass ApplyOptions::driver_path PATH to give its location",
-                        "ApplyOptions::driver_path");
+        return io_error(
+            "cannot read driver '" + path + "' recorded in '" + options.moments_path +
+                "' (cmfilter:source): no such file; pass ApplyOptions::driver_path PATH to give its location",
+            "ApplyOptions::driver_path");
     auto driver = read_moment_source(path, options.moments_path, info, threads);
     if (!driver) return driver.error();
     if (!is_moment_source(*driver, info)) {
@@ -90,8 +89,7 @@ const char* to_string(FilterMethod method)
 
 Expected<FilterMethod> parse_filter_method(const std::string& name)
 {
-    for (FilterMethod m : {FilterMethod::Naive, FilterMethod::Gaussian, FilterMethod::Exact,
-                           FilterMethod::Reference})
+    for (FilterMethod m : {FilterMethod::Naive, FilterMethod::Gaussian, FilterMethod::Exact, FilterMethod::Reference})
         if (name == to_string(m)) return m;
     return bad_input("unknown method '" + name + "' (expected naive, gaussian, exact or reference)");
 }
@@ -99,8 +97,8 @@ Expected<FilterMethod> parse_filter_method(const std::string& name)
 Expected<FilteredImage> apply_filter(const ApplyOptions& options, const ColorConfig& config)
 {
     if (options.width < 0 || options.height < 0 || (options.width == 0) != (options.height == 0))
-        return bad_input("output size " + std::to_string(options.width) + "x" +
-                         std::to_string(options.height) + " is invalid (expected W, H >= 1)");
+        return bad_input("output size " + std::to_string(options.width) + "x" + std::to_string(options.height) +
+                         " is invalid (expected W, H >= 1)");
     if (!std::isfinite(options.lod))
         return bad_input("ApplyOptions::lod " + format_number(options.lod) + " is invalid (expected a finite number)",
                          "ApplyOptions::lod");
@@ -128,22 +126,20 @@ Expected<FilteredImage> apply_filter(const ApplyOptions& options, const ColorCon
     // entirely outside would take one end colour everywhere: refused.
     const std::string domain = "[" + format_number(axes.vmin) + ", " + format_number(axes.vmax) + "]";
     if (axes.wrap == WrapMode::Clamp && (info.driver_max < axes.vmin || info.driver_min > axes.vmax))
-        return bad_input("the driver range [" + format_number(info.driver_min) + ", " +
-                         format_number(info.driver_max) + "] of '" + options.moments_path +
-                         "' does not overlap the domain " + domain + " of table '" +
-                         options.table_path + "' (expected overlapping ranges; re-bake the table "
+        return bad_input("the driver range [" + format_number(info.driver_min) + ", " + format_number(info.driver_max) +
+                         "] of '" + options.moments_path + "' does not overlap the domain " + domain + " of table '" +
+                         options.table_path +
+                         "' (expected overlapping ranges; re-bake the table "
                          "with a ColorMapLoadOptions::vmin:vmax that covers the driver)");
     if (info.driver_min < axes.vmin || info.driver_max > axes.vmax) {
         auto outside = count_outside(options.moments_path, info, axes.vmin, axes.vmax);
         if (!outside) return outside.error();
         out.texels_outside_domain = *outside;
-        out.fraction_outside_domain =
-            static_cast<double>(*outside) / (static_cast<double>(info.width) * info.height);
+        out.fraction_outside_domain = static_cast<double>(*outside) / (static_cast<double>(info.width) * info.height);
         if (axes.wrap == WrapMode::Clamp && *outside > 0)
-            out.warnings.push_back(
-                std::to_string(*outside) + " of the driver's texels (" +
-                format_number(100 * out.fraction_outside_domain) + "%) lie outside the domain " +
-                domain + " of table '" + options.table_path + "' and take its end colours");
+            out.warnings.push_back(std::to_string(*outside) + " of the driver's texels (" +
+                                   format_number(100 * out.fraction_outside_domain) + "%) lie outside the domain " +
+                                   domain + " of table '" + options.table_path + "' and take its end colours");
     }
 
     // The level of detail: TextureSystem can reach levels 0 .. top.
@@ -153,9 +149,9 @@ Expected<FilteredImage> apply_filter(const ApplyOptions& options, const ColorCon
     out.lod_clamped = static_cast<double>(lod) != options.lod;
     if (out.lod_clamped)
         out.warnings.push_back("ApplyOptions::lod " + format_number(options.lod) + " is outside [0, " +
-                               std::to_string(out.top_level) + "] for '" + options.moments_path +
-                               "' (" + std::to_string(info.width) + " x " + std::to_string(info.height) +
-                               "); clamped to " + format_number(lod));
+                               std::to_string(out.top_level) + "] for '" + options.moments_path + "' (" +
+                               std::to_string(info.width) + " x " + std::to_string(info.height) + "); clamped to " +
+                               format_number(lod));
     const int base = static_cast<int>(std::floor(lod));
     out.width = options.width > 0 ? options.width : box_level_extent(info.width, base);
     out.height = options.height > 0 ? options.height : box_level_extent(info.height, base);
@@ -195,9 +191,9 @@ Expected<FilteredImage> apply_filter(const ApplyOptions& options, const ColorCon
         if (!h) return h.error();
         if (h->info().width != info.width || h->info().height != info.height)
             return bad_input("histogram pyramid '" + options.histograms_path + "' is " +
-                             std::to_string(h->info().width) + " x " + std::to_string(h->info().height) +
-                             " but '" + options.moments_path + "' is " + std::to_string(info.width) +
-                             " x " + std::to_string(info.height) + " (expected the same driver)");
+                             std::to_string(h->info().width) + " x " + std::to_string(h->info().height) + " but '" +
+                             options.moments_path + "' is " + std::to_string(info.width) + " x " +
+                             std::to_string(info.height) + " (expected the same driver)");
         for (double v : h->info().values) bin_colors.push_back(map->map.map.evaluate(v));
         out.histograms_path = options.histograms_path;
         histograms = std::move(*h);
@@ -220,14 +216,13 @@ Expected<FilteredImage> apply_filter(const ApplyOptions& options, const ColorCon
                 // <C0, D> = sum_b h_b C0(v_b), exact for a box footprint (sec. 4.1).
                 if (histograms->lookup(s, t, lod, weights.data()))
                     for (std::size_t b = 0; b < weights.size(); ++b) c += weights[b] * bin_colors[b];
-                else
-                    ++failed[y];
+                else ++failed[y];
             } else {
                 const MomentSample m = moments->lookup(s, t, lod);  // mean f, sigma_f (sec. 4.2)
                 if (!m.ok) ++failed[y];
                 c = options.method == FilterMethod::Naive
-                        ? map->map.map.evaluate(m.mean)                          // C0(mean f)
-                        : table->table.lookup(m.mean, m.sigma, &counters[y]);   // T(mean, sigma), eq. 10
+                        ? map->map.map.evaluate(m.mean)                        // C0(mean f)
+                        : table->table.lookup(m.mean, m.sigma, &counters[y]);  // T(mean, sigma), eq. 10
             }
             float* p = out.rgb.data() + (static_cast<std::size_t>(y) * W + x) * 3;
             p[0] = static_cast<float>(c.r);
@@ -249,8 +244,7 @@ Expected<FilteredImage> apply_filter(const ApplyOptions& options, const ColorCon
         out.failed_lookups += failed[y];
     }
     if (out.failed_lookups > 0)
-        out.warnings.push_back(std::to_string(out.failed_lookups) +
-                               " texture lookups failed and were read as black");
+        out.warnings.push_back(std::to_string(out.failed_lookups) + " texture lookups failed and were read as black");
     return out;
 }
 

@@ -34,29 +34,29 @@ const char* to_string(FilterMethod method);
 Expected<FilterMethod> parse_filter_method(const std::string& name);
 
 struct ApplyOptions {
-    std::string moments_path;     // moment pyramid (bake-moments)
-    std::string table_path;       // Gaussian colour table (bake-colormap)
-    double lod = 0;               // clamped to [0, top reachable level], with a warning
+    std::string moments_path;  // moment pyramid (bake-moments)
+    std::string table_path;    // Gaussian colour table (bake-colormap)
+    double lod = 0;            // clamped to [0, top reachable level], with a warning
     FilterMethod method = FilterMethod::Gaussian;
-    int width = 0, height = 0;    // output size; 0 x 0: the size of level floor(lod)
-    std::string map_path;         // naive/exact/reference: overrides the table's cmfilter:source
-    std::string driver_path;      // reference: overrides the moments' cmfilter:source
-    std::string histograms_path;  // exact: the histogram pyramid (required)
-    int threads = 0;              // 0: all cores
+    int width = 0, height = 0;                      // output size; 0 x 0: the size of level floor(lod)
+    std::string map_path;                           // naive/exact/reference: overrides the table's cmfilter:source
+    std::string driver_path;                        // reference: overrides the moments' cmfilter:source
+    std::string histograms_path;                    // exact: the histogram pyramid (required)
+    int threads = 0;                                // 0: all cores
     std::function<void(double fraction)> progress;  // optional, from the calling thread
 };
 
 struct FilteredImage {
     int width = 0, height = 0;
-    std::vector<float> rgb;       // width * height * 3, scene-linear, top row first
+    std::vector<float> rgb;  // width * height * 3, scene-linear, top row first
     FilterMethod method = FilterMethod::Gaussian;
-    std::string linear_space;     // the colour space of rgb (the config's scene_linear)
+    std::string linear_space;  // the colour space of rgb (the config's scene_linear)
     double lod_requested = 0;
-    double lod = 0;               // after clamping
+    double lod = 0;  // after clamping
     bool lod_clamped = false;
-    int top_level = 0;            // the highest level of detail lookups can reach
+    int top_level = 0;  // the highest level of detail lookups can reach
 
-    MomentPyramidInfo moments;    // what the moment pyramid says about itself
+    MomentPyramidInfo moments;  // what the moment pyramid says about itself
     std::string moments_path, table_path;
     std::string map_path;         // the colour map file used (naive, exact, reference)
     std::string driver_path;      // the driver read (reference)
@@ -64,7 +64,7 @@ struct FilteredImage {
 
     // gaussian: table lookups outside its range (LookupCounters).
     LookupCounters table_counters;
-    std::size_t failed_lookups = 0;   // texture lookups that failed (read as black)
+    std::size_t failed_lookups = 0;  // texture lookups that failed (read as black)
     // Level-0 driver texels outside the table's domain [vmin, vmax] (from the
     // moments, c + m1), and their fraction.
     std::size_t texels_outside_domain = 0;

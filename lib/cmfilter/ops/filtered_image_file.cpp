@@ -8,16 +8,12 @@ namespace cmfilter {
 
 Status check_filtered_image_output(const std::string& path) { return check_rgb_image_output(path); }
 
-Status write_filtered_image(const std::string& path, const FilteredImage& image,
-                            const ColorConfig& config)
+Status write_filtered_image(const std::string& path, const FilteredImage& image, const ColorConfig& config)
 {
     ImageAttributes a;
-    a.text = {{"cmfilter:kind", kFilteredImageKind},
-              {"cmfilter:version", version()},
-              {"cmfilter:method", to_string(image.method)},
-              {"cmfilter:moments", image.moments_path},
-              {"cmfilter:table", image.table_path},
-              {"cmfilter:driver_source", image.moments.source}};
+    a.text = {{"cmfilter:kind", kFilteredImageKind},        {"cmfilter:version", version()},
+              {"cmfilter:method", to_string(image.method)}, {"cmfilter:moments", image.moments_path},
+              {"cmfilter:table", image.table_path},         {"cmfilter:driver_source", image.moments.source}};
     if (!image.map_path.empty()) a.text.emplace_back("cmfilter:map", image.map_path);
     if (!image.driver_path.empty()) a.text.emplace_back("cmfilter:driver", image.driver_path);
     if (!image.histograms_path.empty()) a.text.emplace_back("cmfilter:histograms", image.histograms_path);

@@ -20,7 +20,6 @@ inline constexpr const char* kFilteredImageKind = "filtered-image";
 // and ends in .exr, .png, .jpg or .jpeg.
 Status check_filtered_image_output(const std::string& path);
 
-Status write_filtered_image(const std::string& path, const FilteredImage& image,
-                            const ColorConfig& config);
+Status write_filtered_image(const std::string& path, const FilteredImage& image, const ColorConfig& config);
 
 }  // namespace cmfilter

@@ -19,7 +19,7 @@ namespace cmfilter {
 namespace {
 
 struct LinearImage {
-    ImageData data;          // size and metadata (its pixels are released once copied)
+    ImageData data;  // size and metadata (its pixels are released once copied)
     ComparedImage info;
     std::vector<float> rgb;  // width * height * 3, scene-linear
 };
@@ -58,8 +58,8 @@ std::vector<float> rgb_samples(const ImageData& img)
     return rgb;
 }
 
-Expected<LinearImage> load_linear(const std::string& path, const std::string& requested,
-                                  const std::string& option, const ColorConfig& config)
+Expected<LinearImage> load_linear(const std::string& path, const std::string& requested, const std::string& option,
+                                  const ColorConfig& config)
 {
     auto image = read_image(path);
     if (!image) return image.error();
@@ -76,9 +76,8 @@ Expected<LinearImage> load_linear(const std::string& path, const std::string& re
         const std::size_t pixel = nf.first / 3;
         std::ostringstream msg;
         msg << "'" << path << "' has " << nf.pixels << " pixel" << (nf.pixels == 1 ? "" : "s")
-            << " with non-finite values (the first at (" << pixel % img.width << ", "
-            << pixel / img.width << ") channel " << nf.first % 3 << ": " << out.rgb[nf.first]
-            << "); expected finite colours";
+            << " with non-finite values (the first at (" << pixel % img.width << ", " << pixel / img.width
+            << ") channel " << nf.first % 3 << ": " << out.rgb[nf.first] << "); expected finite colours";
         return bad_input(msg.str());
     }
 
@@ -101,8 +100,7 @@ Expected<LinearImage> load_linear(const std::string& path, const std::string& re
 
 }  // namespace
 
-Expected<ImageComparison> compare_images(const ImageComparisonOptions& options,
-                                         const ColorConfig& config)
+Expected<ImageComparison> compare_images(const ImageComparisonOptions& options, const ColorConfig& config)
 {
     if (!std::isfinite(options.heatmap_max) || !(options.heatmap_max > 0.0)) {
         std::ostringstream msg;
@@ -121,8 +119,8 @@ Expected<ImageComparison> compare_images(const ImageComparisonOptions& options,
     if (!b) return b.error();
     if (a->data.width != b->data.width || a->data.height != b->data.height) {
         std::ostringstream msg;
-        msg << "'" << options.path_a << "' is " << a->data.width << " x " << a->data.height
-            << " but '" << options.path_b << "' is " << b->data.width << " x " << b->data.height
+        msg << "'" << options.path_a << "' is " << a->data.width << " x " << a->data.height << " but '"
+            << options.path_b << "' is " << b->data.width << " x " << b->data.height
             << "; expected images of the same size";
         return bad_input(msg.str());
     }
@@ -170,10 +168,9 @@ Expected<ImageComparison> compare_images(const ImageComparisonOptions& options,
         image.errors = &de;
         image.max = options.heatmap_max;
         std::ostringstream description;
-        description << "cmfilter compare: per-pixel CIEDE2000 of '" << options.path_a << "' vs '"
-                    << options.path_b << "'; 0 black, " << options.heatmap_max / 3
-                    << " red, " << 2 * options.heatmap_max / 3 << " yellow, "
-                    << options.heatmap_max << " and above white";
+        description << "cmfilter compare: per-pixel CIEDE2000 of '" << options.path_a << "' vs '" << options.path_b
+                    << "'; 0 black, " << options.heatmap_max / 3 << " red, " << 2 * options.heatmap_max / 3
+                    << " yellow, " << options.heatmap_max << " and above white";
         image.description = description.str();
         if (auto st = write_heatmap_png(options.heatmap_path, image); !st) return st.error();
         result.heatmap_path = options.heatmap_path;

@@ -26,7 +26,7 @@ namespace cmfilter {
 struct ImageComparisonOptions {
     std::string path_a;
     std::string path_b;
-    std::string colorspace_a;   // empty: decided from the file (metadata, else float/integer default)
+    std::string colorspace_a;  // empty: decided from the file (metadata, else float/integer default)
     std::string colorspace_b;
     std::string heatmap_path;   // empty: no heat map; else a .png to write
     double heatmap_max = 10.0;  // Delta E00 drawn as white; larger errors saturate
@@ -44,19 +44,18 @@ struct ComparedImage {
 struct ImageComparison {
     int width = 0;
     int height = 0;
-    std::size_t pixels = 0;         // width * height
-    int channels_compared = 3;      // R, G, B
+    std::size_t pixels = 0;     // width * height
+    int channels_compared = 3;  // R, G, B
     ComparedImage a, b;
-    std::string linear_space;       // the config's scene_linear colour space
-    std::string ocio_config;        // "built-in" or a path
-    double rmse = 0;                // over all R, G, B samples, scene-linear
+    std::string linear_space;          // the config's scene_linear colour space
+    std::string ocio_config;           // "built-in" or a path
+    double rmse = 0;                   // over all R, G, B samples, scene-linear
     std::array<double, 3> rmse_rgb{};  // per channel
-    ErrorSummary de2000;            // per-pixel CIEDE2000
-    std::string heatmap_path;       // written, or empty
-    double heatmap_max = 0;         // its scale (Delta E00 drawn as white)
+    ErrorSummary de2000;               // per-pixel CIEDE2000
+    std::string heatmap_path;          // written, or empty
+    double heatmap_max = 0;            // its scale (Delta E00 drawn as white)
 };
 
-Expected<ImageComparison> compare_images(const ImageComparisonOptions& options,
-                                         const ColorConfig& config);
+Expected<ImageComparison> compare_images(const ImageComparisonOptions& options, const ColorConfig& config);
 
 }  // namespace cmfilter

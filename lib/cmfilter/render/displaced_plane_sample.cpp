@@ -15,7 +15,8 @@ std::optional<DisplacedPlaneSample> trace_displaced_plane(const Surface& plane, 
     // Heights along the normal facing the ray's origin.
     const Vec3 n = dot(origin - plane.point, plane.normal) >= 0 ? plane.normal : -1.0 * plane.normal;
     const auto local_point = [&](const Vec3& p) {
-        return Vec3{dot(p - m.origin, m.u_axis) - shift, dot(p - m.origin, m.v_axis) - shift, k * dot(p - plane.point, n)};
+        return Vec3{dot(p - m.origin, m.u_axis) - shift, dot(p - m.origin, m.v_axis) - shift,
+                    k * dot(p - plane.point, n)};
     };
     // Directions scale by k on every axis: the local ray's t is k times the scene's.
     const auto local_direction = [&](const Vec3& d) { return Vec3{dot(d, m.u_axis), dot(d, m.v_axis), k * dot(d, n)}; };

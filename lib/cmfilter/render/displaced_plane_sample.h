@@ -16,9 +16,9 @@
 namespace cmfilter {
 
 struct DisplacedPlaneSample {
-    double t = 0;           // scene distance along the unit ray direction
-    double height = 0;      // of the hit, texture units: C_h's argument
-    bool lit = false;       // the shadow ray reaches the light
+    double t = 0;             // scene distance along the unit ray direction
+    double height = 0;        // of the hit, texture units: C_h's argument
+    bool lit = false;         // the shadow ray reaches the light
     double light_cosine = 0;  // max(0, <m, l>) for the hit's micro-normal m
     double x = 0, y = 0;      // the hit's texture coordinates (u, v)
     // The microsurface's slopes (dh/du, dh/dv) at the hit: the heightfield's

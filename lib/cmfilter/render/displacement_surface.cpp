@@ -21,11 +21,11 @@ public:
         auto field = texture_.heightfield(context.options.threads);
         heightfield_shift_ = 0.5 / texture_.size();
         if (!field)
-            return Error{field.error().kind,
-                         context.scene.path + ": /surfaces/" + std::to_string(surface_) +
-                             "/material/displacement: " + std::string(to_string(context.options.method)) +
-                             " traces the texels as a heightfield, which needs a power-of-two size: " +
-                             field.error().message};
+            return Error{
+                field.error().kind,
+                context.scene.path + ": /surfaces/" + std::to_string(surface_) +
+                    "/material/displacement: " + std::string(to_string(context.options.method)) +
+                    " traces the texels as a heightfield, which needs a power-of-two size: " + field.error().message};
         heightfield_.emplace(std::move(*field));
         return ok();
     }
@@ -51,13 +51,11 @@ private:
 }  // namespace
 
 Expected<std::unique_ptr<SurfaceRenderer>> make_displacement_renderer(const DisplacementDriver& driver,
-                                                                      std::size_t surface,
-                                                                      const RenderOptions& options)
+                                                                      std::size_t surface, const RenderOptions& options)
 {
     auto base = make_base_renderer(driver.base, surface, options);
     if (!base) return base.error();
-    return std::unique_ptr<SurfaceRenderer>(
-        std::make_unique<DisplacementRenderer>(driver, surface, std::move(*base)));
+    return std::unique_ptr<SurfaceRenderer>(std::make_unique<DisplacementRenderer>(driver, surface, std::move(*base)));
 }
 
 }  // namespace cmfilter

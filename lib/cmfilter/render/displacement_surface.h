@@ -11,8 +11,7 @@
 
 namespace cmfilter {
 
-Expected<std::unique_ptr<SurfaceRenderer>> make_displacement_renderer(const DisplacementDriver& driver,
-                                                                      std::size_t surface,
-                                                                      const RenderOptions& options);
+Expected<std::unique_ptr<SurfaceRenderer>>
+make_displacement_renderer(const DisplacementDriver& driver, std::size_t surface, const RenderOptions& options);
 
 }  // namespace cmfilter

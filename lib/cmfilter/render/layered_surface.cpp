@@ -40,15 +40,13 @@ LayeredSurfaceRenderer::LayeredSurfaceRenderer(std::size_t surface, const Micros
 {
 }
 
-FilteredHit LayeredSurfaceRenderer::filter(const SurfaceHit& h, const RenderContext& context,
-                                           HitScratch& scratch) const
+FilteredHit LayeredSurfaceRenderer::filter(const SurfaceHit& h, const RenderContext& context, HitScratch& scratch) const
 {
     const Scene& scene = context.scene;
     // Height- and slope-correlated colour and a base layer (secs. 5-6),
     // masked and shadowed.
-    const HeightDirections directions = height_directions(scene.surfaces[surface_], h,
-                                                          normalize(scene.camera.position - h.point),
-                                                          scene.light.direction);
+    const HeightDirections directions = height_directions(
+        scene.surfaces[surface_], h, normalize(scene.camera.position - h.point), scene.light.direction);
     std::optional<Rgb> base;
     if (base_ && !context.supersampled) base = base_->filter(h, context, scratch).albedo;
 
@@ -67,8 +65,7 @@ FilteredHit LayeredSurfaceRenderer::filter(const SurfaceHit& h, const RenderCont
         ResolvedSlope slope;
         filter_piece(piece, f, slope);
         const MicrosurfaceLayers a = microsurface_layers(colors_, f, slope, directions, context.layers,
-                                                         *context.height_table, scratch.counts, displacement_,
-                                                         &piece);
+                                                         *context.height_table, scratch.counts, displacement_, &piece);
         visibility += a.visibility;
         shadowed += a.shadowed;
         out.mean += a.mean;
@@ -97,8 +94,8 @@ void LayeredSurfaceRenderer::sample(const CameraRay& ray, const SurfaceHit& h, c
     if (base_) base = base_->point_albedo(traced->x, traced->y);
     if (colors_.height) height = colors_.height->map.evaluate(traced->height);
     if (colors_.slope)
-        slope = std::visit([&](const auto& map) { return map.evaluate(traced->slope_x, traced->slope_y); },
-                           *colors_.slope);
+        slope =
+            std::visit([&](const auto& map) { return map.evaluate(traced->slope_x, traced->slope_y); }, *colors_.slope);
     const Rgb c = combine_point_color(colors_.combine, base, height, slope);
     MicrosurfaceSamples& acc = pixel.microsurfaces[surface_];
     const double lit = traced->lit ? traced->light_cosine : 0.0;
@@ -118,9 +115,8 @@ Expected<std::unique_ptr<DriverRenderer>> make_base_renderer(const std::shared_p
                                                              std::size_t surface, const RenderOptions& options)
 {
     if (!base) return std::unique_ptr<DriverRenderer>();
-    return make_driver_renderer(*base, surface,
-                                options.method == RenderMethod::Naive ? RenderMethod::Naive : RenderMethod::Gaussian,
-                                options);
+    return make_driver_renderer(
+        *base, surface, options.method == RenderMethod::Naive ? RenderMethod::Naive : RenderMethod::Gaussian, options);
 }
 
 }  // namespace cmfilter

@@ -33,8 +33,8 @@ public:
 protected:
     // `displacement`: a textured displacement's own slopes and heights for
     // its slope layer (microsurface_layers); null on a Gaussian microsurface.
-    LayeredSurfaceRenderer(std::size_t surface, const MicrosurfaceColors& colors,
-                           std::unique_ptr<DriverRenderer> base, const DisplacementTexture* displacement);
+    LayeredSurfaceRenderer(std::size_t surface, const MicrosurfaceColors& colors, std::unique_ptr<DriverRenderer> base,
+                           const DisplacementTexture* displacement);
 
     // The unresolved footprint over one piece and its resolved mean slope
     // (needed with a slope map).

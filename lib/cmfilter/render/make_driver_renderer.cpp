@@ -10,8 +10,7 @@
 namespace cmfilter {
 
 Expected<std::unique_ptr<DriverRenderer>> make_driver_renderer(const Material& material, std::size_t surface,
-                                                               RenderMethod colour_method,
-                                                               const RenderOptions& options)
+                                                               RenderMethod colour_method, const RenderOptions& options)
 {
     if (const auto* noise = std::get_if<NoiseDriver>(&material.driver))
         return make_noise_renderer(material.color, *noise, surface, colour_method);

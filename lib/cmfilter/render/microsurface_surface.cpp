@@ -47,13 +47,11 @@ private:
 }  // namespace
 
 Expected<std::unique_ptr<SurfaceRenderer>> make_microsurface_renderer(const MicrosurfaceDriver& driver,
-                                                                      std::size_t surface,
-                                                                      const RenderOptions& options)
+                                                                      std::size_t surface, const RenderOptions& options)
 {
     auto base = make_base_renderer(driver.base, surface, options);
     if (!base) return base.error();
-    return std::unique_ptr<SurfaceRenderer>(
-        std::make_unique<MicrosurfaceRenderer>(driver, surface, std::move(*base)));
+    return std::unique_ptr<SurfaceRenderer>(std::make_unique<MicrosurfaceRenderer>(driver, surface, std::move(*base)));
 }
 
 }  // namespace cmfilter

@@ -10,8 +10,7 @@
 
 namespace cmfilter {
 
-Expected<std::unique_ptr<SurfaceRenderer>> make_microsurface_renderer(const MicrosurfaceDriver& driver,
-                                                                      std::size_t surface,
-                                                                      const RenderOptions& options);
+Expected<std::unique_ptr<SurfaceRenderer>>
+make_microsurface_renderer(const MicrosurfaceDriver& driver, std::size_t surface, const RenderOptions& options);
 
 }  // namespace cmfilter

@@ -50,7 +50,8 @@ void sample_positions(int count, std::uint64_t seed, std::uint64_t index, std::v
                   columns[static_cast<std::size_t>(splitmix64(state) % static_cast<std::uint64_t>(k + 1))]);
     for (int k = 0; k < count; ++k) {
         ys[static_cast<std::size_t>(k)] = (k + unit_interval(splitmix64(state))) / count;
-        xs[static_cast<std::size_t>(k)] = (columns[static_cast<std::size_t>(k)] + unit_interval(splitmix64(state))) / count;
+        xs[static_cast<std::size_t>(k)] = (columns[static_cast<std::size_t>(k)] + unit_interval(splitmix64(state))) /
+                                          count;
     }
 }
 
@@ -148,13 +149,10 @@ struct RowRenderer {
         samples.distance = 0;
         samples.microsurfaces.assign(surfaces.size(), MicrosurfaceSamples{});
         for (int s = 0; s < image.samples; ++s) {
-            const CameraRay ray =
-                camera.ray(x + xs[static_cast<std::size_t>(s)], y + ys[static_cast<std::size_t>(s)]);
+            const CameraRay ray = camera.ray(x + xs[static_cast<std::size_t>(s)], y + ys[static_cast<std::size_t>(s)]);
             const auto sample_hit = intersect_scene(scene, ray);
-            if (!sample_hit)
-                samples.add_background(scene.background);
-            else
-                surface(sample_hit->surface).sample(ray, sample_hit->hit, context, samples);
+            if (!sample_hit) samples.add_background(scene.background);
+            else surface(sample_hit->surface).sample(ray, sample_hit->hit, context, samples);
         }
         // Each microsurface's share of the pixel: the albedo of eq. 14
         // estimated from its rays (the lit colour over the light cosine,
@@ -174,8 +172,7 @@ struct RowRenderer {
 
 }  // namespace
 
-Expected<RenderedImage> render(const Scene& scene, const std::vector<Material>& materials,
-                               const RenderOptions& options)
+Expected<RenderedImage> render(const Scene& scene, const std::vector<Material>& materials, const RenderOptions& options)
 {
     if (materials.size() != scene.surfaces.size())
         return bad_input("render: " + std::to_string(materials.size()) + " materials for " +
@@ -205,16 +202,16 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<Material>& 
     layers.slopes = slope_representation(options.method);
     layers.masking = options.masking;
     layers.slope_shading = options.slope_shading;
-    const RenderContext context{scene, options,
-                                options.method == RenderMethod::Supersample || options.method == RenderMethod::Reference,
-                                layers, height_table ? &*height_table : nullptr};
+    const RenderContext context{
+        scene, options, options.method == RenderMethod::Supersample || options.method == RenderMethod::Reference,
+        layers, height_table ? &*height_table : nullptr};
 
     RenderedImage image;
     image.width = camera->width();
     image.height = camera->height();
     image.method = options.method;
     image.samples = options.method == RenderMethod::Reference ? std::max(options.samples, kReferenceSamples)
-                    : context.supersampled                   ? options.samples
+                    : context.supersampled                    ? options.samples
                                                               : 1;
     const std::size_t pixels = static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height);
     image.rgb.assign(3 * pixels, 0.0f);

@@ -59,7 +59,7 @@ namespace cmfilter {
 
 struct RenderedImage {
     int width = 0, height = 0;
-    std::vector<float> rgb;    // scene-linear, top row first
+    std::vector<float> rgb;  // scene-linear, top row first
     // Per pixel, from the ray through its centre (every method): whether it
     // hit a surface, its distance, and the filtered mean, sigma and LOD of
     // the driver there (0 where nothing is hit).
@@ -75,11 +75,11 @@ struct RenderedImage {
     // where rgb holds the eq. 14 albedo shaded by the plane's normal.
     std::vector<float> shaded;
     RenderMethod method = RenderMethod::Gaussian;
-    int samples = 1;           // rays per pixel
+    int samples = 1;  // rays per pixel
     // gaussian: footprints (pixels or probes) coloured, and how many took
     // C0(mean) directly (the small-sigma shortcut, gaussian_albedo.h).
     std::size_t footprints = 0, plain_footprints = 0;
-    double seconds = 0;        // wall time of the pixel loop
+    double seconds = 0;  // wall time of the pixel loop
 };
 
 // Each surface is coloured by its material's driver kind

@@ -18,8 +18,8 @@ const char* to_string(RenderMethod method)
 
 Expected<RenderMethod> parse_render_method(const std::string& text)
 {
-    for (RenderMethod m : {RenderMethod::Naive, RenderMethod::Gaussian, RenderMethod::GaussianExact, RenderMethod::Exact,
-                           RenderMethod::Supersample, RenderMethod::Reference})
+    for (RenderMethod m : {RenderMethod::Naive, RenderMethod::Gaussian, RenderMethod::GaussianExact,
+                           RenderMethod::Exact, RenderMethod::Supersample, RenderMethod::Reference})
         if (text == to_string(m)) return m;
     return bad_input("method '" + text +
                      "' is unknown (expected naive, gaussian, gaussian-exact, exact, supersample or reference)");

@@ -24,7 +24,7 @@ struct RenderOptions {
     RenderMethod method = RenderMethod::Gaussian;
     int samples = 16;  // supersample: N >= 1; reference: max(N, 1024)
     std::uint64_t seed = 0;
-    int threads = 0;   // 0: all cores
+    int threads = 0;  // 0: all cores
     FootprintWidth footprint = FootprintWidth::Rms;
     // Naive, gaussian and exact: filter an anisotropic footprint as up to
     // this many probes along its major edge (anisotropic_probes.h; textures:

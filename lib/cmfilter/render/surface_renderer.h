@@ -45,8 +45,8 @@ inline Rgb shade(const Rgb& albedo, const Vec3& normal, const SceneLight& light)
 struct RenderContext {
     const Scene& scene;
     const RenderOptions& options;
-    bool supersampled = false;         // supersample or reference
-    MicrosurfaceLayerOptions layers;   // microsurfaces: how D_h and D_s are represented
+    bool supersampled = false;                        // supersample or reference
+    MicrosurfaceLayerOptions layers;                  // microsurfaces: how D_h and D_s are represented
     const HeightMomentTable* height_table = nullptr;  // D_h's exact moments; set when a microsurface is present
 };
 

@@ -14,8 +14,8 @@ namespace {
 // sum_b h_b C0(v_b) (sec. 4.1), the inner product of eq. 8 over the
 // histogram at (u, v) and the trilinear lookup LOD lod (below 0: level 0). A
 // failed lookup leaves zero weights (black), as apply's exact method.
-Rgb histogram_color(const HistogramTexture& histograms, double u, double v, double lod,
-                     const std::vector<Rgb>& colors, std::vector<float>& weights)
+Rgb histogram_color(const HistogramTexture& histograms, double u, double v, double lod, const std::vector<Rgb>& colors,
+                    std::vector<float>& weights)
 {
     weights.resize(colors.size());
     if (histograms.info().wrap == TextureWrap::Periodic) {
@@ -32,9 +32,9 @@ Rgb histogram_color(const HistogramTexture& histograms, double u, double v, doub
 }  // namespace
 
 TextureFootprint filter_texture_footprint(const ColorLayer& color, const FilteredTexture& texture,
-                                          const HistogramTexture* histograms, const SurfaceHit& h,
-                                          TextureColor colour, FootprintWidth width, int max_probes,
-                                          const std::vector<Rgb>& bin_colors, std::vector<float>& weights)
+                                          const HistogramTexture* histograms, const SurfaceHit& h, TextureColor colour,
+                                          FootprintWidth width, int max_probes, const std::vector<Rgb>& bin_colors,
+                                          std::vector<float>& weights)
 {
     TextureFootprint out;
     const FootprintProbes probes = footprint_probes(h.du_dx, h.dv_dx, h.du_dy, h.dv_dy, max_probes, width);

@@ -37,20 +37,20 @@ namespace cmfilter {
 enum class TextureColor { None, Naive, Gaussian, Exact };
 
 struct TextureFootprint {
-    Rgb albedo;          // mean of the probes' colours (black for TextureColor::None)
-    double mean = 0;     // mean of the probes' means: the footprint's mean of f
-    double sigma = 0;    // mean of the probes' sigmas
-    double lod = 0;      // LOD of one probe's width, log2 of it in level-0 texels
+    Rgb albedo;        // mean of the probes' colours (black for TextureColor::None)
+    double mean = 0;   // mean of the probes' means: the footprint's mean of f
+    double sigma = 0;  // mean of the probes' sigmas
+    double lod = 0;    // LOD of one probe's width, log2 of it in level-0 texels
     int probes = 1;
-    AlbedoCounts counts; // gaussian: probes coloured, and those that took C0(mean) (gaussian_albedo.h)
+    AlbedoCounts counts;  // gaussian: probes coloured, and those that took C0(mean) (gaussian_albedo.h)
 };
 
 // `color`: C0 and its table over the texture's values; `histograms`: the
 // texture's histogram pyramid (Exact only); `bin_colors`: C0(v_b) for its
 // values (Exact only); `weights`: scratch space for the histogram weights.
 TextureFootprint filter_texture_footprint(const ColorLayer& color, const FilteredTexture& texture,
-                                          const HistogramTexture* histograms, const SurfaceHit& h,
-                                          TextureColor colour, FootprintWidth width, int max_probes,
-                                          const std::vector<Rgb>& bin_colors, std::vector<float>& weights);
+                                          const HistogramTexture* histograms, const SurfaceHit& h, TextureColor colour,
+                                          FootprintWidth width, int max_probes, const std::vector<Rgb>& bin_colors,
+                                          std::vector<float>& weights);
 
 }  // namespace cmfilter

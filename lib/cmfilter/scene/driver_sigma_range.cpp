@@ -141,8 +141,8 @@ Expected<DriverSigmaRange> largest_moment_pyramid_sigma(const std::string& path)
     DriverSigmaRange out;
     out.sigma_max = sigma;
     out.kind = kMomentPyramidKind;
-    out.how = "the largest footprint sigma over " + std::to_string(levels) + " levels of the moment pyramid '" +
-              path + "'";
+    out.how = "the largest footprint sigma over " + std::to_string(levels) + " levels of the moment pyramid '" + path +
+              "'";
     return out;
 }
 
@@ -226,7 +226,8 @@ Expected<DriverSigmaRange> largest_scene_sigma(const Scene& scene, const DriverS
     DriverSigmaRange out;
     out.sigma_max = best.sigma_max;
     out.kind = "scene";
-    out.how = "scene '" + scene.path + "', surface " + std::to_string(best_surface) + ": " + best.how + " (the largest of " +
+    out.how = "scene '" + scene.path + "', surface " + std::to_string(best_surface) + ": " + best.how +
+              " (the largest of " +
               (all ? "all " + std::to_string(chosen.size()) + " surfaces; none uses this map"
                    : std::to_string(chosen.size()) + " of " + std::to_string(scene.surfaces.size()) +
                          " surfaces, those using this map") +

@@ -91,8 +91,7 @@ struct Material {
 // A microsurface material (Gaussian or displaced): coloured by its layers.
 inline bool is_microsurface(const Material& m)
 {
-    return std::holds_alternative<MicrosurfaceDriver>(m.driver) ||
-           std::holds_alternative<DisplacementDriver>(m.driver);
+    return std::holds_alternative<MicrosurfaceDriver>(m.driver) || std::holds_alternative<DisplacementDriver>(m.driver);
 }
 
 // The microsurface's colours, or null for a noise or texture driver.

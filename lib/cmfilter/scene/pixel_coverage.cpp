@@ -124,7 +124,8 @@ bool PixelCoverage::holds_meeting(const Box& box, std::vector<std::pair<double, 
         const SurfaceOutline& outline_a = outlines_[static_cast<std::size_t>(i)];
         const SurfaceOutline& outline_b = outlines_[static_cast<std::size_t>(j)];
         if (!outline_a.may_see(box.x0, box.y0, box.size) || !outline_b.may_see(box.x0, box.y0, box.size)) continue;
-        const bool outline = outline_a.may_cross(box.x0, box.y0, box.size) || outline_b.may_cross(box.x0, box.y0, box.size);
+        const bool outline = outline_a.may_cross(box.x0, box.y0, box.size) ||
+                             outline_b.may_cross(box.x0, box.y0, box.size);
         if (outline && !across) return true;
         const Surface& a = scene_->surfaces[static_cast<std::size_t>(i)];
         const Surface& b = scene_->surfaces[static_cast<std::size_t>(j)];
@@ -146,10 +147,8 @@ bool PixelCoverage::holds_meeting(const Box& box, std::vector<std::pair<double, 
         const double gx = 0.5 * (depth[1] + depth[3] - depth[0] - depth[2]);
         const double gy = 0.5 * (depth[2] + depth[3] - depth[0] - depth[1]);
         const double norm = std::hypot(gx, gy);
-        if (in_front + behind == 5 && norm > 0 && std::isfinite(norm))
-            across->emplace_back(gx / norm, gy / norm);
-        else
-            across->emplace_back(kUnknown, kUnknown);
+        if (in_front + behind == 5 && norm > 0 && std::isfinite(norm)) across->emplace_back(gx / norm, gy / norm);
+        else across->emplace_back(kUnknown, kUnknown);
     }
     return found;
 }
@@ -173,7 +172,8 @@ void PixelCoverage::cover_box(int x, int y, const Box& box, bool sampled, int de
     // corners cannot tell, is cut in four, up to kMaxDepth times.
     std::vector<std::pair<double, double>> across;
     for (const SurfaceOutline& o : outlines_)
-        if (o.may_cross(box.x0, box.y0, box.size)) across.push_back(o.across(box.x0 + 0.5 * box.size, box.y0 + 0.5 * box.size));
+        if (o.may_cross(box.x0, box.y0, box.size))
+            across.push_back(o.across(box.x0 + 0.5 * box.size, box.y0 + 0.5 * box.size));
     if (sampled) holds_meeting(box, &across);
     if (across.empty() && !sampled) {  // no edge within: one surface
         part(nearest(box.x0 + 0.5 * box.size, box.y0 + 0.5 * box.size))
@@ -229,7 +229,9 @@ void PixelCoverage::cover_box(int x, int y, const Box& box, bool sampled, int de
             // piece: sample it from end to end (just inside), and bisect
             // every change.
             const auto sample_at = [&](int k2) {
-                const double f = k2 == 0 ? 1e-9 : k2 == kDepthSamples ? 1 - 1e-9 : static_cast<double>(k2) / kDepthSamples;
+                const double f = k2 == 0               ? 1e-9
+                                 : k2 == kDepthSamples ? 1 - 1e-9
+                                                       : static_cast<double>(k2) / kDepthSamples;
                 return a + f * (b - a);
             };
             double from = a, previous = sample_at(0);
@@ -307,7 +309,9 @@ std::optional<SurfaceHit> PixelCoverage::hit(const CoveragePiece& piece) const
         intersect(scene_->surfaces[static_cast<std::size_t>(piece.surface)], camera_->ray(piece.px, piece.py));
     if (!h) return std::nullopt;
     // The chain rule: d/ds = m00 d/dx + m10 d/dy, d/dt = m01 d/dx + m11 d/dy.
-    const auto along = [](double m_x, double m_y, double d_dx, double d_dy) { return bounded(m_x * d_dx + m_y * d_dy); };
+    const auto along = [](double m_x, double m_y, double d_dx, double d_dy) {
+        return bounded(m_x * d_dx + m_y * d_dy);
+    };
     const Vec3 dp_dx = h->dp_dx, dp_dy = h->dp_dy;
     h->dp_dx = {along(piece.m00, piece.m10, dp_dx.x, dp_dy.x), along(piece.m00, piece.m10, dp_dx.y, dp_dy.y),
                 along(piece.m00, piece.m10, dp_dx.z, dp_dy.z)};

@@ -54,9 +54,9 @@
 namespace cmfilter {
 
 struct CoveragePiece {
-    int surface = -1;        // index into Scene::surfaces
-    double share = 0;        // of the box pixel's area
-    double px = 0, py = 0;   // representative image point, seeing the surface
+    int surface = -1;       // index into Scene::surfaces
+    double share = 0;       // of the box pixel's area
+    double px = 0, py = 0;  // representative image point, seeing the surface
     // The part's footprint in pixels: the image steps (m00, m10) and (m01,
     // m11) take the place of one pixel along x and along y.
     double m00 = 1, m01 = 0, m10 = 0, m11 = 1;

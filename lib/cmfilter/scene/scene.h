@@ -134,7 +134,7 @@ struct MaterialSource {
     std::optional<DisplacementSource> displacement;
     std::optional<SlopeColorMapSource> slope_colormap;  // microsurface only
     std::optional<BaseLayerSource> base;                // microsurface only
-    ColorCombination combine;                          // microsurface only (color_combination.h)
+    ColorCombination combine;                           // microsurface only (color_combination.h)
 
     bool has_colormap() const { return !colormap.table_path.empty() || !colormap.image_path.empty(); }
     bool has_microsurface() const { return microsurface || displacement; }
@@ -143,10 +143,10 @@ struct MaterialSource {
 enum class SurfaceKind { Plane, Sphere };
 struct Surface {
     SurfaceKind kind = SurfaceKind::Plane;
-    Vec3 point;               // plane: a point on it
-    Vec3 normal{0, 1, 0};     // plane: unit length after loading
-    Vec3 center;              // sphere
-    double radius = 1;        // sphere: > 0
+    Vec3 point;            // plane: a point on it
+    Vec3 normal{0, 1, 0};  // plane: unit length after loading
+    Vec3 center;           // sphere
+    double radius = 1;     // sphere: > 0
     TextureMapping mapping;
     MaterialSource material;
 };

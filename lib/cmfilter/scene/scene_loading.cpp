@@ -39,8 +39,8 @@ std::string vector_text(const Vec3& v) { return nlohmann::json::array({v.x, v.y,
 // may be absent (its default).
 Error vector_error(const JsonObject& object, const std::string& key, const Vec3& v, const std::string& expectation)
 {
-    return object.value().member_error(
-        key, "expected " + expectation + ", got " + vector_text(v) + (object.has(key) ? "" : " (the default)"));
+    return object.value().member_error(key, "expected " + expectation + ", got " + vector_text(v) +
+                                                (object.has(key) ? "" : " (the default)"));
 }
 
 // ---- values -----------------------------------------------------------------
@@ -123,8 +123,7 @@ Status read_resolution(const JsonObject& camera_object, SceneCamera& camera)
     const long long pixels = static_cast<long long>(width) * height;
     if (pixels > kMaxImagePixels)
         return value->error("expected width * height <= " + std::to_string(kMaxImagePixels) + " pixels, got " +
-                            std::to_string(width) + " x " + std::to_string(height) + " = " +
-                            std::to_string(pixels));
+                            std::to_string(width) + " x " + std::to_string(height) + " = " + std::to_string(pixels));
     camera.width = width;
     camera.height = height;
     return ok();
@@ -295,7 +294,8 @@ Expected<GaussianMicrosurfaceOptions> read_microsurface(const JsonValue& value)
     if (status) status = object->read_required("min_wavelength", o.min_wavelength, read_positive);
     if (status) status = object->read_required("max_wavelength", o.max_wavelength, read_positive);
     if (status && o.max_wavelength < o.min_wavelength)
-        return value.member("max_wavelength").expected("a number >= min_wavelength " + std::to_string(o.min_wavelength));
+        return value.member("max_wavelength")
+            .expected("a number >= min_wavelength " + std::to_string(o.min_wavelength));
     if (status) status = object->read_optional("cosines", o.cosines, read_cosine_count);
     if (status) status = object->read_optional("seed", o.seed, read_seed);
     if (status) status = object->read_optional("tile", o.tile, read_positive);
@@ -343,11 +343,12 @@ Expected<BaseLayerSource> read_base_layer(const JsonValue& value, const fs::path
     auto object = JsonObject::read(value, {"colormap", "driver"});
     if (!object) return object.error();
     BaseLayerSource base;
-    Status status = object->read_required(
-        "colormap", base.colormap, [&](const JsonValue& v) { return read_colormap(v, scene_folder); });
+    Status status = object->read_required("colormap", base.colormap,
+                                          [&](const JsonValue& v) { return read_colormap(v, scene_folder); });
     if (status && base.colormap.tolerance)
-        return value.member("colormap").member_error("tolerance", "a base layer's colour map takes the default "
-                                                                  "table (tolerance applies to the height map)");
+        return value.member("colormap")
+            .member_error("tolerance", "a base layer's colour map takes the default "
+                                       "table (tolerance applies to the height map)");
     if (status)
         status = object->read_required("driver", base.driver,
                                        [&](const JsonValue& v) { return read_driver(v, scene_folder); });
@@ -378,8 +379,8 @@ Expected<ColorCombination> read_combination(const JsonValue& value, const bool (
         for (int k = 0; k < 3 && status; ++k) {
             if (present[k]) status = weights->read_required(names[k], *targets[k], read_non_negative);
             else if (weights->has(names[k]))
-                status = weights_value->member_error(names[k], std::string("the material has no ") + layers[k] +
-                                                                   " to weigh");
+                status = weights_value->member_error(names[k],
+                                                     std::string("the material has no ") + layers[k] + " to weigh");
         }
     }
     if (!status) return status.error();
@@ -417,8 +418,8 @@ Expected<MaterialSource> read_material(const JsonValue& value, const fs::path& s
         status = object->reject_any_of({"slope_colormap", "base", "combine"},
                                        "needs a microsurface (a driven material has its colormap alone)");
         if (status)
-            status = object->read_required(
-                "colormap", material.colormap, [&](const JsonValue& v) { return read_colormap(v, scene_folder); });
+            status = object->read_required("colormap", material.colormap,
+                                           [&](const JsonValue& v) { return read_colormap(v, scene_folder); });
         if (status)
             status = object->read_required("driver", material.driver,
                                            [&](const JsonValue& v) { return read_driver(v, scene_folder); });
@@ -431,8 +432,8 @@ Expected<MaterialSource> read_material(const JsonValue& value, const fs::path& s
         status = object->read_required("displacement", material.displacement,
                                        [&](const JsonValue& v) { return read_displacement(v, scene_folder); });
     if (status)
-        status = object->read_optional(
-            "colormap", material.colormap, [&](const JsonValue& v) { return read_colormap(v, scene_folder); });
+        status = object->read_optional("colormap", material.colormap,
+                                       [&](const JsonValue& v) { return read_colormap(v, scene_folder); });
     if (status)
         status = object->read_optional("slope_colormap", material.slope_colormap,
                                        [&](const JsonValue& v) { return read_slope_colormap(v, scene_folder); });
@@ -509,9 +510,10 @@ Status check_planar_mapping_on_plane(const JsonObject& surface_object, const Sur
     if (std::fabs(dot(plane.normal, axes_normal)) > kParallelSine * length(axes_normal)) return ok();
     return surface_object.value().member_error(
         "mapping", "expected u_axis and v_axis whose cross product is not parallel to the plane (else the "
-                   "texture is constant along a line of the plane), got u_axis " + vector_text(mapping.u_axis) +
-                       " and v_axis " + vector_text(mapping.v_axis) + " on a plane of normal " +
-                       vector_text(plane.normal) + (surface_object.has("mapping") ? "" : " (the default mapping)"));
+                   "texture is constant along a line of the plane), got u_axis " +
+                       vector_text(mapping.u_axis) + " and v_axis " + vector_text(mapping.v_axis) +
+                       " on a plane of normal " + vector_text(plane.normal) +
+                       (surface_object.has("mapping") ? "" : " (the default mapping)"));
 }
 
 // A microsurface displaces a plane along its normal, in the units of a
@@ -522,12 +524,13 @@ Status check_microsurface_plane(const JsonObject& surface_object, const Surface&
     if (surface.kind != SurfaceKind::Plane)
         return material.member_error(surface.material.microsurface ? "microsurface" : "displacement",
                                      "a microsurface needs a plane (it displaces the plane along its "
-                                                     "normal), not a sphere");
+                                     "normal), not a sphere");
     const TextureMapping& m = surface.mapping;
     const double ku = length(m.u_axis), kv = length(m.v_axis);
     const double tolerance = 1e-6;
     if (std::fabs(dot(m.u_axis, m.v_axis)) > tolerance * ku * kv || std::fabs(ku - kv) > tolerance * std::max(ku, kv) ||
-        std::fabs(dot(m.u_axis, surface.normal)) > tolerance * ku || std::fabs(dot(m.v_axis, surface.normal)) > tolerance * kv)
+        std::fabs(dot(m.u_axis, surface.normal)) > tolerance * ku ||
+        std::fabs(dot(m.v_axis, surface.normal)) > tolerance * kv)
         return surface_object.value().member_error(
             "mapping", "a microsurface needs a planar mapping whose u_axis and v_axis are perpendicular, of equal "
                        "length and in the plane (its heights and wavelengths are in texture units), got u_axis " +
@@ -590,8 +593,8 @@ Expected<Scene> load_scene(const std::string& path)
     if (fs::is_directory(path, ec)) return io_error(path + ": cannot read the scene: it is a directory");
     std::ifstream in(path, std::ios::binary);
     if (!in)
-        return io_error(path + ": cannot read the scene: " +
-                        (fs::exists(path, ec) ? "the file cannot be opened" : "no such file"));
+        return io_error(
+            path + ": cannot read the scene: " + (fs::exists(path, ec) ? "the file cannot be opened" : "no such file"));
     std::ostringstream text;
     text << in.rdbuf();
     if (in.bad()) return io_error(path + ": cannot read the scene: a read failed");

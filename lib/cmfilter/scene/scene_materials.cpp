@@ -61,8 +61,8 @@ ColorMapLoadOptions gradient_load_options(const std::string& path, double vmin, 
 }
 
 // The layer's colour map and, unless it is fitted later, its table.
-Status load_colormap(const LayerSource& layer, const ColorConfig& config, const MaterialOptions& options,
-                     ColorLayer& m, MaterialProvenance& provenance)
+Status load_colormap(const LayerSource& layer, const ColorConfig& config, const MaterialOptions& options, ColorLayer& m,
+                     MaterialProvenance& provenance)
 {
     const ColorMapSource& source = layer.colormap;
     const std::string prefix = layer.where("colormap");
@@ -79,9 +79,9 @@ Status load_colormap(const LayerSource& layer, const ColorConfig& config, const 
         provenance.table_path = source.table_path;
         return ok();
     }
-    auto map = load_color_map(gradient_load_options(source.image_path, source.domain_min, source.domain_max,
-                                                    source.wrap, source.colorspace),
-                              config);
+    auto map = load_color_map(
+        gradient_load_options(source.image_path, source.domain_min, source.domain_max, source.wrap, source.colorspace),
+        config);
     if (!map) return located(map.error(), prefix);
     m.map = std::move(map->map);
     provenance.map_path = source.image_path;
@@ -144,8 +144,8 @@ Expected<NoiseDriver> load_noise_driver(const LayerSource& layer, const ColorMap
 
     if (map.wrap == WrapMode::Clamp) {
         const NoiseGlobalStats stats = measure_global_stats(*noise, 1 << 16, 7, options.threads);
-        if (auto st = check_domain(layer, map, stats.mean - 3 * stats.sigma, stats.mean + 3 * stats.sigma,
-                                   "mean +- 3 sigma");
+        if (auto st =
+                check_domain(layer, map, stats.mean - 3 * stats.sigma, stats.mean + 3 * stats.sigma, "mean +- 3 sigma");
             !st)
             return st.error();
     }
@@ -186,8 +186,8 @@ Expected<TextureDriver> load_moments_driver(const LayerSource& layer, const Colo
 
 // A driver image: read once, its moment pyramid baked in process into a
 // temporary file (TextureSystem reads files) that the texture keeps.
-Expected<TextureDriver> load_image_driver(const LayerSource& layer, const ColorMap& map,
-                                          const MaterialOptions& options, MaterialProvenance& provenance)
+Expected<TextureDriver> load_image_driver(const LayerSource& layer, const ColorMap& map, const MaterialOptions& options,
+                                          MaterialProvenance& provenance)
 {
     const std::string& path = layer.driver.image_path;
     const std::size_t i = layer.i;
@@ -198,8 +198,7 @@ Expected<TextureDriver> load_image_driver(const LayerSource& layer, const ColorM
     bake.threads = options.threads;
     auto driver = read_driver_and_hash(bake.driver_read());
     if (!driver) return located(driver.error(), prefix);
-    if (auto st = check_domain(layer, map, driver->image.min, driver->image.max, "min and max"); !st)
-        return st.error();
+    if (auto st = check_domain(layer, map, driver->image.min, driver->image.max, "min and max"); !st) return st.error();
     if (options.note)
         options.note("baking the moment pyramid of " + path + " (surface " + std::to_string(i) +
                      "; bake it once with bake-moments --wrap periodic and name it with driver/moments to skip "
@@ -226,8 +225,7 @@ Status load_histograms(const Scene& scene, std::size_t i, const MaterialOptions&
                        MaterialProvenance& provenance)
 {
     const DriverSource& driver = scene.surfaces[i].material.driver;
-    const std::string prefix =
-        where(scene, i, driver.kind == DriverKind::Moments ? "driver/moments" : "driver/image");
+    const std::string prefix = where(scene, i, driver.kind == DriverKind::Moments ? "driver/moments" : "driver/image");
     if (!provenance.missing_driver.empty())
         return io_error(provenance.missing_driver +
                         "; exact bakes its histograms from the driver's texels: re-bake the "
@@ -357,8 +355,7 @@ Expected<Material> load_microsurface_material(const Scene& scene, std::size_t i,
     MicrosurfaceColors colors;
     colors.height = std::move(heights);
     std::shared_ptr<const Material> base;
-    if (auto st = load_microsurface_colors(scene, i, config, options, colors, base, provenance); !st)
-        return st.error();
+    if (auto st = load_microsurface_colors(scene, i, config, options, colors, base, provenance); !st) return st.error();
     return Material{std::move(provenance), ColorLayer{},
                     MicrosurfaceDriver{std::move(*micro), 1.0 / length(surface.mapping.u_axis), std::move(colors),
                                        std::move(base)}};
@@ -387,16 +384,15 @@ Expected<Material> load_displacement_material(const Scene& scene, std::size_t i,
                 lo = std::min(lo, texture->texel_height(k, j));
                 hi = std::max(hi, texture->texel_height(k, j));
             }
-        if (auto st = check_domain(material_layer(scene, i), heights->map, lo, hi,
-                                   "the displacement's heights, min and max");
+        if (auto st =
+                check_domain(material_layer(scene, i), heights->map, lo, hi, "the displacement's heights, min and max");
             !st)
             return st.error();
     }
     MicrosurfaceColors colors;
     colors.height = std::move(heights);
     std::shared_ptr<const Material> base;
-    if (auto st = load_microsurface_colors(scene, i, config, options, colors, base, provenance); !st)
-        return st.error();
+    if (auto st = load_microsurface_colors(scene, i, config, options, colors, base, provenance); !st) return st.error();
     return Material{std::move(provenance), ColorLayer{},
                     DisplacementDriver{std::move(*texture), 1.0 / length(surface.mapping.u_axis), std::move(colors),
                                        std::move(base)}};

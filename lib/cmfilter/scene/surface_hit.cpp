@@ -155,8 +155,7 @@ std::optional<SurfaceHit> intersect(const Surface& surface, const CameraRay& ray
     hit.normal = found->normal;
     hit.dp_dx = surface_derivative(ray, *found, ray.d_direction_dx);
     hit.dp_dy = surface_derivative(ray, *found, ray.d_direction_dy);
-    if (surface.mapping.kind == MappingKind::Planar)
-        map_planar(surface.mapping, hit);
+    if (surface.mapping.kind == MappingKind::Planar) map_planar(surface.mapping, hit);
     else  // a plane's spherical mapping: directions from the mapping's origin
         map_spherical(surface.mapping, sphere ? surface.center : surface.mapping.origin, hit);
     return hit;

@@ -31,9 +31,9 @@ namespace cmfilter {
 inline constexpr double kDerivativeLimit = 1e30;
 
 struct SurfaceHit {
-    double t = 0;      // distance along the unit ray direction
+    double t = 0;  // distance along the unit ray direction
     Vec3 point;
-    Vec3 normal;       // unit, facing the ray's origin
+    Vec3 normal;          // unit, facing the ray's origin
     double u = 0, v = 0;  // texture coordinates (scene.h, TextureMapping)
     Vec3 dp_dx, dp_dy;    // world-space footprint of one pixel step
     double du_dx = 0, dv_dx = 0, du_dy = 0, dv_dy = 0;

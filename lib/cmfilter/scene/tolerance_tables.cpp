@@ -17,8 +17,7 @@ Error located(const Scene& scene, std::size_t surface, const Error& e)
     return prefixed(scene.path + ": /surfaces/" + std::to_string(surface) + "/material/colormap: ", e);
 }
 
-Status check_optional(const std::optional<double>& value, const char* name, const char* field,
-                      const char* expected)
+Status check_optional(const std::optional<double>& value, const char* name, const char* field, const char* expected)
 {
     if (value && !(std::isfinite(*value) && *value >= 0)) {
         std::ostringstream msg;
@@ -40,13 +39,15 @@ Status choose_surface_table(const Scene& scene, std::size_t surface, ColorLayer&
                             const TableChoiceOptions& options)
 {
     if (auto st = check_optional(options.tolerance, "--tolerance", "TableChoiceOptions::tolerance",
-                                 "a CIEDE2000 difference > 0"); !st) return st;
+                                 "a CIEDE2000 difference > 0");
+        !st)
+        return st;
     if (auto st = check_plain_bound(options.plain_bound); !st) return st;
     if (surface >= scene.surfaces.size())
         return bad_input(scene.path + ": surface " + std::to_string(surface) + " does not exist");
-    const std::optional<double> tolerance =
-        options.tolerance ? (*options.tolerance > 0 ? options.tolerance : std::nullopt)
-                          : scene.surfaces[surface].material.colormap.tolerance;
+    const std::optional<double> tolerance = options.tolerance
+                                                ? (*options.tolerance > 0 ? options.tolerance : std::nullopt)
+                                                : scene.surfaces[surface].material.colormap.tolerance;
 
     TableFit fit;
     if (tolerance) {
@@ -83,8 +84,7 @@ Status choose_surface_table(const Scene& scene, std::size_t surface, ColorLayer&
     return ok();
 }
 
-Status choose_surface_tables(const Scene& scene, std::vector<Material>& materials,
-                             const TableChoiceOptions& options)
+Status choose_surface_tables(const Scene& scene, std::vector<Material>& materials, const TableChoiceOptions& options)
 {
     for (std::size_t i = 0; i < materials.size(); ++i)
         if (auto st = choose_surface_table(scene, i, table_layer(materials[i]), options); !st) return st;

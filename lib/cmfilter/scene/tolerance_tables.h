@@ -41,7 +41,6 @@ Status choose_surface_table(const Scene& scene, std::size_t surface, ColorLayer&
                             const TableChoiceOptions& options);
 
 // choose_surface_table for every surface's table layer (material.h), in order.
-Status choose_surface_tables(const Scene& scene, std::vector<Material>& materials,
-                             const TableChoiceOptions& options);
+Status choose_surface_tables(const Scene& scene, std::vector<Material>& materials, const TableChoiceOptions& options);
 
 }  // namespace cmfilter

@@ -15,12 +15,12 @@
 namespace cmfilter {
 
 struct ColorLayer {
-    ColorMap map;                // scene-linear
-    GaussianColorTable table;    // T(mean, sigma)
+    ColorMap map;              // scene-linear
+    GaussianColorTable table;  // T(mean, sigma)
     // The gaussian method takes map(mean) itself where sigma <
     // plain.below(mean); empty: never.
     PlainLookupSigma plain;
-    TableFit fit;                // how the table was chosen (tolerance_tables.h)
+    TableFit fit;  // how the table was chosen (tolerance_tables.h)
 };
 
 }  // namespace cmfilter

@@ -19,14 +19,13 @@ constexpr double kTail = 9.0;
 
 }  // namespace
 
-CosineSeriesRows::CosineSeriesRows(const ColorMap& map, double first, double step, int count,
-                                   double sigma_max)
+CosineSeriesRows::CosineSeriesRows(const ColorMap& map, double first, double step, int count, double sigma_max)
     : map_(&map), count_(count), sigma_max_(sigma_max)
 {
     assert(map.wrap == WrapMode::Clamp && step > 0 && count >= 1);
     const long n = map.size();
     const double w = map.texel_width();
-    const double x_first = map.vmin + 0.5 * w;      // first texel centre
+    const double x_first = map.vmin + 0.5 * w;       // first texel centre
     const double x_last = map.vmin + (n - 0.5) * w;  // last texel centre
     const double last = first + (count - 1) * step;  // last value node
     // f = C0 on [2a - x_first, 2b - x_last] must hold every node +- 9 sigma_max:
@@ -133,8 +132,7 @@ double CosineSeriesRows::error_bound(double sigma) const
     const double k1 = K + 1.0;
     const double ratio = std::exp(-beta * (2.0 * K + 3.0));
     if (ratio >= 1.0) return std::numeric_limits<double>::infinity();
-    return 2.0 * window_ * kappa_sum_ / (kPi * kPi) * std::exp(-beta * k1 * k1) / (k1 * k1) /
-           (1.0 - ratio);
+    return 2.0 * window_ * kappa_sum_ / (kPi * kPi) * std::exp(-beta * k1 * k1) / (k1 * k1) / (1.0 - ratio);
 }
 
 void CosineSeriesRows::evaluate(double sigma_a, float* out_a, double sigma_b, float* out_b) const
@@ -190,8 +188,7 @@ void CosineSeriesRows::evaluate(double sigma_a, float* out_a, double sigma_b, fl
             for (std::size_t m = 0; m < m_end; ++m) first += b[m] * cosines_[m];
             y1[seq] = first;
             y0_shift[seq] = 0.5 * (b[0] + b[K]);
-            for (std::size_t m = 0; m < K; ++m)
-                vs[m] = 0.5 * (b[m] + b[K - m]) - sines_[m] * (b[m] - b[K - m]);
+            for (std::size_t m = 0; m < K; ++m) vs[m] = 0.5 * (b[m] + b[K - m]) - sines_[m] * (b[m] - b[K - m]);
         }
     }
     std::vector<std::complex<double>> z(K);
@@ -207,8 +204,8 @@ void CosineSeriesRows::evaluate(double sigma_a, float* out_a, double sigma_b, fl
             y[1] = odd;
             for (std::size_t j = 0; j <= K / 2; ++j) {
                 const std::complex<double> zj = z[j], zk = std::conj(z[(K - j) % K]);
-                const std::complex<double> V =
-                    which == 0 ? 0.5 * (zj + zk) : std::complex<double>(0.0, -0.5) * (zj - zk);
+                const std::complex<double> V = which == 0 ? 0.5 * (zj + zk)
+                                                          : std::complex<double>(0.0, -0.5) * (zj - zk);
                 y[2 * j] = V.real() + y0_shift[seq];
                 if (j > 0 && 2 * j + 1 <= K) {
                     odd -= V.imag();

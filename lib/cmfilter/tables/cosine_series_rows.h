@@ -58,11 +58,11 @@ private:
     const ColorMap* map_;
     int count_;
     double sigma_max_;
-    int J_ = 0;             // the value node v_0 sits at grid index J
-    int K_ = 0;             // window grid points 0..K, W = K step
-    double window_ = 0;     // W
-    double start_ = 0;      // a
-    double kappa_sum_ = 0;  // max over channels of sum |kappa_k|
+    int J_ = 0;                                        // the value node v_0 sits at grid index J
+    int K_ = 0;                                        // window grid points 0..K, W = K step
+    double window_ = 0;                                // W
+    double start_ = 0;                                 // a
+    double kappa_sum_ = 0;                             // max over channels of sum |kappa_k|
     std::vector<Rgb> kappa_;                           // slope change at texel centre k
     std::array<std::vector<double>, 3> coefficients_;  // a_m, m = 0..K
     std::vector<double> cosines_, sines_;              // cos, sin (pi m / K), m = 0..K

@@ -19,10 +19,7 @@ constexpr double kSeriesTolerance = 1e-10;
 
 }  // namespace
 
-const char* to_string(SigmaSpacing spacing)
-{
-    return spacing == SigmaSpacing::Sqrt ? "sqrt" : "linear";
-}
+const char* to_string(SigmaSpacing spacing) { return spacing == SigmaSpacing::Sqrt ? "sqrt" : "linear"; }
 
 Expected<SigmaSpacing> parse_sigma_spacing(const std::string& name)
 {
@@ -31,10 +28,7 @@ Expected<SigmaSpacing> parse_sigma_spacing(const std::string& name)
     return bad_input("unknown sigma spacing '" + name + "' (expected linear or sqrt)");
 }
 
-double TableAxes::value_first() const
-{
-    return wrap == WrapMode::Clamp ? vmin - margin : vmin;
-}
+double TableAxes::value_first() const { return wrap == WrapMode::Clamp ? vmin - margin : vmin; }
 
 double TableAxes::value_last() const
 {
@@ -66,8 +60,7 @@ Expected<TableAxes> make_table_axes(const ColorMap& map, const GaussianColorTabl
     auto check_count = [&](int n, const char* name, const char* field) -> Status {
         if (n < 2 || n > kMaxNodes) {
             std::ostringstream msg;
-            msg << name << " " << n << " is out of range (expected 2.." << kMaxNodes
-                << " samples on the axis)";
+            msg << name << " " << n << " is out of range (expected 2.." << kMaxNodes << " samples on the axis)";
             return bad_input(msg.str(), field);
         }
         return ok();
@@ -99,17 +92,14 @@ Expected<TableAxes> make_table_axes(const ColorMap& map, const GaussianColorTabl
     return axes;
 }
 
-GaussianColorTable::GaussianColorTable(TableAxes axes, std::vector<float> rgb)
-    : axes_(axes), rgb_(std::move(rgb))
+GaussianColorTable::GaussianColorTable(TableAxes axes, std::vector<float> rgb) : axes_(axes), rgb_(std::move(rgb))
 {
-    value_scale_ = axes_.wrap == WrapMode::Repeat
-                       ? axes_.values / (axes_.vmax - axes_.vmin)
-                       : (axes_.values - 1) / (axes_.value_last() - axes_.value_first());
+    value_scale_ = axes_.wrap == WrapMode::Repeat ? axes_.values / (axes_.vmax - axes_.vmin)
+                                                  : (axes_.values - 1) / (axes_.value_last() - axes_.value_first());
     inv_sigma_max_ = 1.0 / axes_.sigma_max;
 }
 
-Expected<GaussianColorTable> GaussianColorTable::bake(const ColorMap& map,
-                                                      const GaussianColorTableOptions& options)
+Expected<GaussianColorTable> GaussianColorTable::bake(const ColorMap& map, const GaussianColorTableOptions& options)
 {
     if (auto st = validate(map, "colour map"); !st) return st.error();
     auto axes = make_table_axes(map, options);
@@ -131,16 +121,15 @@ Expected<GaussianColorTable> GaussianColorTable::bake(const ColorMap& map,
     std::vector<int> series_rows;
     std::optional<CosineSeriesRows> series;
     if (ax.wrap == WrapMode::Clamp) {
-        series.emplace(map, ax.value_first(), (ax.value_last() - ax.value_first()) / (ax.values - 1),
-                       ax.values, ax.sigma_max);
+        series.emplace(map, ax.value_first(), (ax.value_last() - ax.value_first()) / (ax.values - 1), ax.values,
+                       ax.sigma_max);
     }
     for (int j = 0; j < ax.sigmas; ++j) {
         const double sigma = ax.sigma_at(j);
         if (series && series->error_bound(sigma) <= kSeriesTolerance &&
             series->row_cost() < ax.values * GaussianConvolution::estimated_cost(map, sigma))
             series_rows.push_back(j);
-        else
-            tasks.push_back({false, j, -1});
+        else tasks.push_back({false, j, -1});
     }
     for (std::size_t k = 0; k < series_rows.size(); k += 2)
         tasks.push_back({true, series_rows[k], k + 1 < series_rows.size() ? series_rows[k + 1] : -1});
@@ -166,8 +155,7 @@ Expected<GaussianColorTable> GaussianColorTable::bake(const ColorMap& map,
         }
     });
     for (float x : rgb)
-        if (!std::isfinite(x))
-            return runtime_error("baking produced a non-finite table value (internal error)");
+        if (!std::isfinite(x)) return runtime_error("baking produced a non-finite table value (internal error)");
     return GaussianColorTable(ax, std::move(rgb));
 }
 

@@ -29,26 +29,26 @@ const char* to_string(SigmaSpacing spacing);
 Expected<SigmaSpacing> parse_sigma_spacing(const std::string& name);
 
 struct GaussianColorTableOptions {
-    int values = 256;                   // value-axis nodes (>= 2)
-    int sigmas = 256;                   // sigma-axis nodes (>= 2)
-    std::optional<double> sigma_max;    // default: (vmax - vmin) / 4
+    int values = 256;                 // value-axis nodes (>= 2)
+    int sigmas = 256;                 // sigma-axis nodes (>= 2)
+    std::optional<double> sigma_max;  // default: (vmax - vmin) / 4
     SigmaSpacing spacing = SigmaSpacing::Sqrt;
-    std::optional<double> margin;       // clamp only; default 3 sigma_max
-    int threads = 0;                    // 0: all hardware threads
+    std::optional<double> margin;  // clamp only; default 3 sigma_max
+    int threads = 0;               // 0: all hardware threads
 };
 
 // Geometry of a table: everything needed to map (v, sigma) to a texel.
 struct TableAxes {
     int values = 0;
     int sigmas = 0;
-    double vmin = 0, vmax = 1;          // the colour map's domain
+    double vmin = 0, vmax = 1;  // the colour map's domain
     WrapMode wrap = WrapMode::Clamp;
-    double margin = 0;                  // clamp only
+    double margin = 0;  // clamp only
     double sigma_max = 0;
     SigmaSpacing spacing = SigmaSpacing::Linear;
 
-    double value_first() const;         // value of column 0
-    double value_last() const;          // value of column values-1
+    double value_first() const;  // value of column 0
+    double value_last() const;   // value of column values-1
     double value_at(int i) const;
     double sigma_at(int j) const;
 };
@@ -56,9 +56,9 @@ struct TableAxes {
 // Caller-owned tallies of lookups that left the table's range.
 struct LookupCounters {
     std::size_t lookups = 0;
-    std::size_t sigma_clamped = 0;       // sigma > sigma_max, looked up at sigma_max
-    std::size_t value_clamped = 0;       // clamp wrap: mean beyond the value axis
-    std::size_t invalid = 0;             // NaN mean or sigma (or infinite mean when periodic): black
+    std::size_t sigma_clamped = 0;  // sigma > sigma_max, looked up at sigma_max
+    std::size_t value_clamped = 0;  // clamp wrap: mean beyond the value axis
+    std::size_t invalid = 0;        // NaN mean or sigma (or infinite mean when periodic): black
 };
 
 class GaussianColorTable {
@@ -69,8 +69,7 @@ public:
     // Bakes every node with the exact convolution: per node by the step and
     // kink-block sums (gaussian_convolution.h), or whole rows of clamp maps by
     // the bounded cosine series (cosine_series_rows.h).
-    static Expected<GaussianColorTable> bake(const ColorMap& map,
-                                             const GaussianColorTableOptions& options);
+    static Expected<GaussianColorTable> bake(const ColorMap& map, const GaussianColorTableOptions& options);
 
     // Bilinear lookup; never returns NaN. counters may be null.
     Rgb lookup(double mean, double sigma, LookupCounters* counters = nullptr) const;

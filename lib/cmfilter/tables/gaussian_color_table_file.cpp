@@ -32,10 +32,8 @@ Status write_gaussian_color_table(const std::string& path, const GaussianColorTa
     spec.attribute("cmfilter:kind", kGaussianColorTableKind);
     spec.attribute("cmfilter:format_version", kFormatVersion);
     spec.attribute("cmfilter:version", version());
-    spec.attribute("cmfilter:equation",
-                   "T(v, sigma) = (C0 * N(0, sigma^2))(v), Heitz et al. 2013 eq. 10");
-    spec.attribute("cmfilter:layout",
-                   "columns = value nodes, rows = sigma nodes, row 0 = sigma 0; bilinear lookup");
+    spec.attribute("cmfilter:equation", "T(v, sigma) = (C0 * N(0, sigma^2))(v), Heitz et al. 2013 eq. 10");
+    spec.attribute("cmfilter:layout", "columns = value nodes, rows = sigma nodes, row 0 = sigma 0; bilinear lookup");
     const auto dbl = [&](const char* name, double v) { set_double_attribute(spec, name, v); };
     dbl("cmfilter:domain_min", ax.vmin);
     dbl("cmfilter:domain_max", ax.vmax);
@@ -50,8 +48,7 @@ Status write_gaussian_color_table(const std::string& path, const GaussianColorTa
     const ColorMapProvenance& src = info.source;
     spec.attribute("cmfilter:source", src.path);
     spec.attribute("cmfilter:source_sha256", src.sha256);
-    spec.attribute("cmfilter:source_size", std::to_string(src.image_width) + "x" +
-                                               std::to_string(src.image_height));
+    spec.attribute("cmfilter:source_size", std::to_string(src.image_width) + "x" + std::to_string(src.image_height));
     spec.attribute("cmfilter:source_selection", src.selection);
     spec.attribute("cmfilter:colorspace", src.colorspace);
     spec.attribute("cmfilter:colorspace_rule", src.colorspace_rule);
@@ -97,9 +94,8 @@ Expected<LoadedGaussianColorTable> read_gaussian_color_table(const std::string& 
     ax.sigma_max = dbl("cmfilter:sigma_max");
     auto wrap = parse_wrap_mode(spec.get_string_attribute("cmfilter:wrap"));
     auto spacing = parse_sigma_spacing(spec.get_string_attribute("cmfilter:sigma_spacing"));
-    if (!wrap || !spacing || ax.values != image->width || ax.sigmas != image->height ||
-        image->channels != 3 || !(ax.vmin < ax.vmax) || !(ax.sigma_max > 0) ||
-        !std::isfinite(ax.margin) || ax.values < 2 || ax.sigmas < 2)
+    if (!wrap || !spacing || ax.values != image->width || ax.sigmas != image->height || image->channels != 3 ||
+        !(ax.vmin < ax.vmax) || !(ax.sigma_max > 0) || !std::isfinite(ax.margin) || ax.values < 2 || ax.sigmas < 2)
         return bad_input("'" + path + "' has inconsistent cmfilter metadata (axes do not match " +
                          std::to_string(image->width) + " x " + std::to_string(image->height) +
                          " pixels, or a value is missing)");

@@ -32,9 +32,9 @@ struct GaussianColorTableInfo {
     ColorMapProvenance source;
     std::optional<ErrorSummary> lookup_error;  // CIEDE2000 of bilinear lookups vs exact
     int lookup_error_samples = 0;
-    std::string sigma_max_source;              // why this sigma_max (empty: not recorded)
+    std::string sigma_max_source;                   // why this sigma_max (empty: not recorded)
     std::optional<TableToleranceRecord> tolerance;  // set when the size was searched for
-    std::string baked_by;                      // cmfilter version
+    std::string baked_by;                           // cmfilter version
 };
 
 Status write_gaussian_color_table(const std::string& path, const GaussianColorTable& table,

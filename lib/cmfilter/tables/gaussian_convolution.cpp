@@ -42,8 +42,7 @@ double GaussianConvolution::estimated_cost(const ColorMap& map, double sigma)
     const double s = std::max(0.0, sigma) / map.texel_width();
     if (s == 0.0) return 0.0;
     const long n = map.size();
-    const double period = map.wrap == WrapMode::Clamp ? 0.0
-                          : map.wrap == WrapMode::Repeat ? n : 2.0 * n;
+    const double period = map.wrap == WrapMode::Clamp ? 0.0 : map.wrap == WrapMode::Repeat ? n : 2.0 * n;
     if (map.wrap != WrapMode::Clamp && 2.0 * kTail * s >= 4.0 * period) {
         // Fourier series: harmonics until exp(-2 pi^2 m^2 s^2 / p^2) < 1e-18.
         return 0.1 * period * std::sqrt(41.5 / (2.0 * kPi * kPi)) / s + 1.0;
@@ -57,8 +56,7 @@ double GaussianConvolution::estimated_cost(const ColorMap& map, double sigma)
     const double density = static_cast<double>(steps) / std::max(1.0, static_cast<double>(last));
     double cost = step_sum_cost(density, s);
     if (s >= kBlockMinSigma) {
-        const double blocks = std::min(static_cast<double>(steps) + 1.0,
-                                       (2.0 * kTail + 1.0) / kBlockWidth + 1.0);
+        const double blocks = std::min(static_cast<double>(steps) + 1.0, (2.0 * kTail + 1.0) / kBlockWidth + 1.0);
         cost = std::min(cost, kBlockCost * blocks);
     }
     return cost;
@@ -69,8 +67,7 @@ GaussianConvolution::GaussianConvolution(const ColorMap& map, double sigma)
 {
     if (s_ == 0.0) return;
     // Non-zero steps C(k+1) - C(k): over nodes 0..n-1 (clamp) or one period.
-    period_ = map.wrap == WrapMode::Clamp ? 0.0
-              : map.wrap == WrapMode::Repeat ? map.size() : 2.0 * map.size();
+    period_ = map.wrap == WrapMode::Clamp ? 0.0 : map.wrap == WrapMode::Repeat ? map.size() : 2.0 * map.size();
     const long last = map.wrap == WrapMode::Clamp ? map.size() - 1 : static_cast<long>(period_);
     for (long k = 0; k < last; ++k) {
         const Rgb delta = map.node(k + 1) - map.node(k);
@@ -184,8 +181,7 @@ void GaussianConvolution::build_fourier_series()
             const Rgb& c = map.node(k);
             for (int ch = 0; ch < 3; ++ch) acc[ch] += c[ch] * e;
         }
-        for (int ch = 0; ch < 3; ++ch)
-            harmonics_[ch].push_back(acc[ch] * (sinc * sinc * damping / period_));
+        for (int ch = 0; ch < 3; ++ch) harmonics_[ch].push_back(acc[ch] * (sinc * sinc * damping / period_));
     }
 }
 
@@ -242,8 +238,8 @@ Rgb GaussianConvolution::sum_of_kink_blocks(double x) const
             r[j] = w0 * m0.r + w1 * m1.r;
             g[j] = w0 * m0.g + w1 * m1.g;
             bl[j] = w0 * m0.b + w1 * m1.b;
-            weight[j] = sp;      // s phi(t) (-1)^p, sign folded in as p advances
-            he[j] = 1.0;         // He_0
+            weight[j] = sp;  // s phi(t) (-1)^p, sign folded in as p advances
+            he[j] = 1.0;     // He_0
             he_prev[j] = 0.0;
         }
         // He_0 = 1, He_1 = t, He_{m+1} = t He_m - m He_{m-1}.

@@ -54,8 +54,8 @@ private:
     Rgb fourier_series(double x) const;
 
     struct Step {
-        long k;      // between nodes k and k + 1
-        Rgb delta;   // C(k+1) - C(k), never all zero
+        long k;     // between nodes k and k + 1
+        Rgb delta;  // C(k+1) - C(k), never all zero
     };
 
     // Up to s consecutive nodes' slope changes, as Taylor moments about their

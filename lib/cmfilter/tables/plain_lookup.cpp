@@ -48,7 +48,8 @@ Expected<PlainLookupSigma> plain_lookup_sigma(const ColorMap& map, const PlainLo
         return bad_input(msg.str());
     }
     if (options.points_per_texel < 1)
-        return bad_input("points per texel " + std::to_string(options.points_per_texel) + " is invalid (expected >= 1)");
+        return bad_input("points per texel " + std::to_string(options.points_per_texel) +
+                         " is invalid (expected >= 1)");
 
     // Points from one texel before the domain's first texel centre to one after its last.
     const int m = options.points_per_texel;
@@ -75,8 +76,8 @@ Expected<PlainLookupSigma> plain_lookup_sigma(const ColorMap& map, const PlainLo
         fails.assign(active.size(), 0);
         parallel_for(static_cast<int>(active.size()), options.threads, [&](int k) {
             const std::size_t i = active[static_cast<std::size_t>(k)];
-            fails[static_cast<std::size_t>(k)] =
-                ciede2000(plain[i], linear_rec709_to_lab(filtered(v[i]))) > options.bound;
+            fails[static_cast<std::size_t>(k)] = ciede2000(plain[i], linear_rec709_to_lab(filtered(v[i]))) >
+                                                 options.bound;
         });
         std::size_t kept = 0;
         for (std::size_t k = 0; k < active.size(); ++k) {

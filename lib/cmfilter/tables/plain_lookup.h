@@ -37,10 +37,10 @@
 namespace cmfilter {
 
 struct PlainLookupOptions {
-    double bound = 0.1;       // CIEDE2000 between T(v, sigma) and C0(v); finite, > 0
-    double sigma_cap = 0;     // search no further (a table's sigma_max); finite, > 0
-    int points_per_texel = 8; // >= 1
-    int threads = 0;          // 0: all cores
+    double bound = 0.1;        // CIEDE2000 between T(v, sigma) and C0(v); finite, > 0
+    double sigma_cap = 0;      // search no further (a table's sigma_max); finite, > 0
+    int points_per_texel = 8;  // >= 1
+    int threads = 0;           // 0: all cores
 };
 
 // The per-value threshold: a mean v with sigma < below(v) may take C0(v).

@@ -6,8 +6,7 @@
 
 namespace cmfilter {
 
-Expected<TableColorMap> load_table_color_map(const LoadedGaussianColorTable& table,
-                                             const TableColorMapOptions& options,
+Expected<TableColorMap> load_table_color_map(const LoadedGaussianColorTable& table, const TableColorMapOptions& options,
                                              const ColorConfig& config)
 {
     const ColorMapProvenance& src = table.info.source;
@@ -22,10 +21,11 @@ Expected<TableColorMap> load_table_color_map(const LoadedGaussianColorTable& tab
     if (!overridden) {
         std::error_code ec;
         if (!std::filesystem::is_regular_file(path, ec))
-            return io_error("cannot read colour map '" + path + "' recorded in " + where +
-                                " (cmfilter:source): no such file; pass TableColorMapOptions::map_override PATH to give "
-                                "its location",
-                            "TableColorMapOptions::map_override");
+            return io_error(
+                "cannot read colour map '" + path + "' recorded in " + where +
+                    " (cmfilter:source): no such file; pass TableColorMapOptions::map_override PATH to give "
+                    "its location",
+                "TableColorMapOptions::map_override");
     }
 
     ColorMapLoadOptions load;
@@ -41,8 +41,7 @@ Expected<TableColorMap> load_table_color_map(const LoadedGaussianColorTable& tab
         else if (sel.rfind("column ", 0) == 0) load.column = std::stoi(sel.substr(7));
         else throw std::invalid_argument(sel);
     } catch (const std::exception&) {
-        return bad_input(where + " has cmfilter:source_selection '" + sel +
-                         "' (expected 'row N' or 'column N')");
+        return bad_input(where + " has cmfilter:source_selection '" + sel + "' (expected 'row N' or 'column N')");
     }
 
     TableColorMap out;
@@ -51,17 +50,16 @@ Expected<TableColorMap> load_table_color_map(const LoadedGaussianColorTable& tab
     out.map = std::move(*map);
     if (out.map.provenance.sha256 != src.sha256) {
         const std::string what = "colour map '" + path + "' (sha256 " + out.map.provenance.sha256 +
-                                 ") is not the file " + where + " was baked from (sha256 " +
-                                 src.sha256 + ")";
+                                 ") is not the file " + where + " was baked from (sha256 " + src.sha256 + ")";
         if (!overridden)
-            return bad_input(what + "; re-bake the table, or pass TableColorMapOptions::map_override PATH to use it anyway",
-                             "TableColorMapOptions::map_override");
+            return bad_input(
+                what + "; re-bake the table, or pass TableColorMapOptions::map_override PATH to use it anyway",
+                "TableColorMapOptions::map_override");
         out.warnings.push_back(what + "; using it as TableColorMapOptions::map_override asks");
     }
     if (!src.linear_space.empty() && src.linear_space != config.scene_linear_name())
         out.warnings.push_back(where + " was baked in scene-linear '" + src.linear_space +
-                               "' but the OpenColorIO config's scene_linear is '" +
-                               config.scene_linear_name() + "'");
+                               "' but the OpenColorIO config's scene_linear is '" + config.scene_linear_name() + "'");
     return out;
 }
 

@@ -20,8 +20,8 @@
 namespace cmfilter {
 
 struct TableColorMapOptions {
-    std::string table_path;     // for messages
-    std::string map_override;   // empty: the recorded cmfilter:source
+    std::string table_path;    // for messages
+    std::string map_override;  // empty: the recorded cmfilter:source
 };
 
 struct TableColorMap {
@@ -32,8 +32,7 @@ struct TableColorMap {
 // Io (saying to set map_override) when the recorded source cannot be read and no
 // override was given; BadInput when its hash differs from the recorded one
 // (only a warning with an override), or the metadata names no usable map.
-Expected<TableColorMap> load_table_color_map(const LoadedGaussianColorTable& table,
-                                             const TableColorMapOptions& options,
+Expected<TableColorMap> load_table_color_map(const LoadedGaussianColorTable& table, const TableColorMapOptions& options,
                                              const ColorConfig& config);
 
 }  // namespace cmfilter

@@ -9,8 +9,7 @@
 
 namespace cmfilter {
 
-LookupErrorPoints draw_lookup_error_points(const ColorMap& map, double sigma_max,
-                                           const LookupErrorOptions& options)
+LookupErrorPoints draw_lookup_error_points(const ColorMap& map, double sigma_max, const LookupErrorOptions& options)
 {
     const int n = std::max(0, options.samples);
     LookupErrorPoints points;
@@ -31,8 +30,7 @@ LookupErrorPoints draw_lookup_error_points(const ColorMap& map, double sigma_max
     return points;
 }
 
-std::vector<double> lookup_errors(const GaussianColorTable& table, const LookupErrorPoints& points,
-                                  int threads)
+std::vector<double> lookup_errors(const GaussianColorTable& table, const LookupErrorPoints& points, int threads)
 {
     const int n = static_cast<int>(points.v.size());
     std::vector<double> error(n);

@@ -35,13 +35,11 @@ struct LookupErrorPoints {
 // options.samples points over the map's domain and [0, sigma_max], drawn in
 // one sequence from options.seed (the result does not depend on the thread
 // count), each with its exact colour (gaussian_convolution.h).
-LookupErrorPoints draw_lookup_error_points(const ColorMap& map, double sigma_max,
-                                           const LookupErrorOptions& options);
+LookupErrorPoints draw_lookup_error_points(const ColorMap& map, double sigma_max, const LookupErrorOptions& options);
 
 // CIEDE2000 between the table's lookup and the exact colour at each point, in
 // the points' order.
-std::vector<double> lookup_errors(const GaussianColorTable& table, const LookupErrorPoints& points,
-                                  int threads);
+std::vector<double> lookup_errors(const GaussianColorTable& table, const LookupErrorPoints& points, int threads);
 
 // summarize_errors(lookup_errors(table, draw_lookup_error_points(map,
 // table sigma_max, options))).

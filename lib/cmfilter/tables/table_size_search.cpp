@@ -185,7 +185,9 @@ private:
     Error no_table_meets() const
     {
         // A candidate's error: its search error, or the larger of both when verified.
-        const auto error = [](const TableSizeTrial& t) { return t.verified ? std::max(t.error, t.verify_error) : t.error; };
+        const auto error = [](const TableSizeTrial& t) {
+            return t.verified ? std::max(t.error, t.verify_error) : t.error;
+        };
         const TableSizeTrial* lowest = nullptr;
         for (const TableSizeTrial& t : trials_)
             if (!lowest || error(t) < error(*lowest)) lowest = &t;

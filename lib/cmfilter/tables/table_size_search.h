@@ -50,8 +50,8 @@ struct TableSize {
 std::vector<int> power_of_two_counts(int lo, int hi);
 
 struct TableSizeSearchOptions {
-    double tolerance = 1.0;   // CIEDE2000, finite and > 0
-    double quantile = 0.999;  // the error statistic: nearest-rank quantile in (0, 1]; 1 is the maximum
+    double tolerance = 1.0;           // CIEDE2000, finite and > 0
+    double quantile = 0.999;          // the error statistic: nearest-rank quantile in (0, 1]; 1 is the maximum
     std::optional<double> sigma_max;  // as GaussianColorTableOptions (default (vmax - vmin) / 4)
     std::optional<double> margin;     // as GaussianColorTableOptions
     std::vector<int> value_counts = power_of_two_counts(4, 4096);  // ascending, each >= 2
@@ -66,20 +66,20 @@ struct TableSizeSearchOptions {
 // One candidate measured during the search, in the order measured.
 struct TableSizeTrial {
     TableSize size;
-    double error = 0;        // the statistic at the search points
-    bool verified = false;   // checked at the verification points too
-    double verify_error = 0; // the statistic there (when verified)
+    double error = 0;         // the statistic at the search points
+    bool verified = false;    // checked at the verification points too
+    double verify_error = 0;  // the statistic there (when verified)
 };
 
 struct TableSizeSearchResult {
     GaussianColorTable table;  // the chosen table, baked
     TableSize size;
-    double sigma_max = 0;      // the sigma axis the search used
-    double search_error = 0;   // the statistic at the search points
-    double error = 0;          // the statistic at the verification points (<= tolerance)
+    double sigma_max = 0;         // the sigma axis the search used
+    double search_error = 0;      // the statistic at the search points
+    double error = 0;             // the statistic at the verification points (<= tolerance)
     ErrorSummary verify_summary;  // mean, p95, max at the verification points
     std::vector<TableSizeTrial> trials;
-    int rejected = 0;          // winners of the search that failed verification
+    int rejected = 0;  // winners of the search that failed verification
 };
 
 // "max" for q = 1, else "p" and the percentile ("p99.9", "p95").

@@ -6,8 +6,7 @@
 
 namespace cmfilter {
 
-FootprintProbes footprint_probes(double e1u, double e1v, double e2u, double e2v, int max_probes,
-                                 FootprintWidth choice)
+FootprintProbes footprint_probes(double e1u, double e1v, double e2u, double e2v, int max_probes, FootprintWidth choice)
 {
     FootprintProbes p;
     const double l1 = std::hypot(e1u, e1v), l2 = std::hypot(e2u, e2v);

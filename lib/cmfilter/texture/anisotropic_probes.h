@@ -17,12 +17,11 @@ namespace cmfilter {
 
 struct FootprintProbes {
     int count = 1;
-    double step_u = 0, step_v = 0;  // the major edge: probe j at c + ((j + 0.5) / count - 0.5) (step_u, step_v)
+    double step_u = 0, step_v = 0;    // the major edge: probe j at c + ((j + 0.5) / count - 0.5) (step_u, step_v)
     double minor_u = 0, minor_v = 0;  // the other edge, each piece's whole
-    double width = 0;               // of each piece
+    double width = 0;                 // of each piece
 };
 
-FootprintProbes footprint_probes(double e1u, double e1v, double e2u, double e2v, int max_probes,
-                                 FootprintWidth choice);
+FootprintProbes footprint_probes(double e1u, double e1v, double e2u, double e2v, int max_probes, FootprintWidth choice);
 
 }  // namespace cmfilter

@@ -31,10 +31,7 @@ void box_integrals(const double* prefix, const double* g, int W, int w, double* 
 
 }  // namespace
 
-int box_level_extent(int extent, int level)
-{
-    return level >= 31 ? 1 : std::max(1, extent >> level);
-}
+int box_level_extent(int extent, int level) { return level >= 31 ? 1 : std::max(1, extent >> level); }
 
 int box_level_count(int width, int height)
 {
@@ -46,8 +43,7 @@ int box_level_count(int width, int height)
 // Level-0 row r spans [r, r+1), output row y spans [y H / h, (y+1) H / h); in
 // units of 1/h these are [r h, (r+1) h) and [y H, (y+1) H), so overlaps are
 // exact integers. Since h <= H a level-0 row touches at most two output rows.
-void BoxPyramidAccumulator::Upper::add_row(int r, int H, int channels, double inv_area,
-                                           const double* integrals)
+void BoxPyramidAccumulator::Upper::add_row(int r, int H, int channels, double inv_area, const double* integrals)
 {
     const std::size_t n = static_cast<std::size_t>(w) * channels;
     std::int64_t lo = static_cast<std::int64_t>(r) * h;

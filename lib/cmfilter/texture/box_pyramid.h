@@ -57,9 +57,9 @@ private:
     };
     int width_, height_, channels_, threads_;
     std::vector<Upper> upper_;
-    std::vector<std::size_t> offset_;           // of each level in a row's integrals
-    std::vector<std::vector<double>> work_;     // per thread: planes and prefix sums
-    std::vector<double> integrals_;             // per batch row, per level: channel planes
+    std::vector<std::size_t> offset_;        // of each level in a row's integrals
+    std::vector<std::vector<double>> work_;  // per thread: planes and prefix sums
+    std::vector<double> integrals_;          // per batch row, per level: channel planes
 };
 
 }  // namespace cmfilter

@@ -23,8 +23,8 @@
 namespace cmfilter {
 
 struct BoxPyramidFileOptions {
-    std::string path;                        // where to write (a temporary file)
-    std::string name;                        // the destination, for messages
+    std::string path;  // where to write (a temporary file)
+    std::string name;  // the destination, for messages
     int width = 0, height = 0;
     std::vector<std::string> channel_names;  // one per channel
     int tile_size = 64;

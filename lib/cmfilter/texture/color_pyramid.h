@@ -28,7 +28,7 @@ struct ColorPyramidOptions {
     int width = 0, height = 0;
     const ColorMap* map = nullptr;
     TextureWrap wrap = TextureWrap::Clamp;
-    double reference = 0;                        // c: what a black border stands for
+    double reference = 0;  // c: what a black border stands for
     int threads = 0;
 };
 

@@ -16,8 +16,8 @@ Expected<FilteredTexture> FilteredTexture::create(MomentTexture moments, std::op
     const std::size_t texels = static_cast<std::size_t>(info.width) * static_cast<std::size_t>(info.height);
     if (level0 && level0->size() != texels)
         return bad_input("driver texture '" + moments.path() + "': " + std::to_string(level0->size()) +
-                         " level-0 texels for a " + std::to_string(info.width) + " x " +
-                         std::to_string(info.height) + " pyramid (expected " + std::to_string(texels) + ")");
+                         " level-0 texels for a " + std::to_string(info.width) + " x " + std::to_string(info.height) +
+                         " pyramid (expected " + std::to_string(texels) + ")");
     FilteredTexture out(std::move(moments));
     if (level0) out.level0_ = std::make_shared<const std::vector<float>>(std::move(*level0));
     out.owned_ = std::move(owned);

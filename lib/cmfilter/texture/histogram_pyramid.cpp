@@ -28,15 +28,14 @@ Expected<HistogramPyramidInfo> bake_histogram_pyramid(const HistogramBakeOptions
     values.erase(std::unique(values.begin(), values.end()), values.end());
     if (values.size() > static_cast<std::size_t>(kHistogramMaxValues))
         return bad_input("driver '" + options.driver_path + "' has " + std::to_string(values.size()) +
-                         " distinct values; a histogram pyramid holds at most " +
-                         std::to_string(kHistogramMaxValues) +
+                         " distinct values; a histogram pyramid holds at most " + std::to_string(kHistogramMaxValues) +
                          " (quantise the driver, or use the gaussian method)");
     const int W = driver->width, H = driver->height;
     const int B = static_cast<int>(values.size());
     std::vector<unsigned char> bin(driver->values.size());
     for (std::size_t i = 0; i < bin.size(); ++i)
-        bin[i] = static_cast<unsigned char>(
-            std::lower_bound(values.begin(), values.end(), driver->values[i]) - values.begin());
+        bin[i] = static_cast<unsigned char>(std::lower_bound(values.begin(), values.end(), driver->values[i]) -
+                                            values.begin());
     driver->values = {};
 
     HistogramPyramidInfo info;

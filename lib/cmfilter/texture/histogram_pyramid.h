@@ -50,7 +50,7 @@ struct HistogramPyramidInfo {
     std::string source;
     std::string source_sha256;
     std::size_t nonfinite_replaced = 0;
-    std::string baked_by;        // cmfilter version (filled in on read)
+    std::string baked_by;  // cmfilter version (filled in on read)
 };
 
 // The cmfilter:* attributes of a histogram pyramid (and the "wrapmodes"
@@ -58,8 +58,7 @@ struct HistogramPyramidInfo {
 // Reading gives BadInput naming `path` when the file is not a histogram
 // pyramid or its metadata is inconsistent with its channels.
 void set_histogram_pyramid_metadata(OIIO::ImageSpec& spec, const HistogramPyramidInfo& info);
-Expected<HistogramPyramidInfo> get_histogram_pyramid_metadata(const OIIO::ImageSpec& spec,
-                                                              const std::string& path);
+Expected<HistogramPyramidInfo> get_histogram_pyramid_metadata(const OIIO::ImageSpec& spec, const std::string& path);
 
 struct HistogramBakeOptions : PyramidBakeOptions {};
 

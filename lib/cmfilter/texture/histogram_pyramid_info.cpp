@@ -20,9 +20,8 @@ void set_histogram_pyramid_metadata(OIIO::ImageSpec& spec, const HistogramPyrami
     spec.attribute("cmfilter:equation",
                    "channel b: box mean of [f == v_b] per level; filtered colour = sum_b h_b C(v_b) "
                    "(Heitz et al. 2013, sec. 4.1)");
-    spec.attribute("cmfilter:layout",
-                   "level k is max(1, W >> k) x max(1, H >> k); texel (x, y) of level k is the "
-                   "box mean over level-0 [x W / w_k, (x+1) W / w_k) x [y H / h_k, (y+1) H / h_k)");
+    spec.attribute("cmfilter:layout", "level k is max(1, W >> k) x max(1, H >> k); texel (x, y) of level k is the "
+                                      "box mean over level-0 [x W / w_k, (x+1) W / w_k) x [y H / h_k, (y+1) H / h_k)");
     // The values are float32 driver values: 9 significant digits round-trip them.
     std::string values;
     char buf[32];
@@ -37,23 +36,20 @@ void set_histogram_pyramid_metadata(OIIO::ImageSpec& spec, const HistogramPyrami
     spec.attribute("cmfilter:channel", info.channel);
     spec.attribute("cmfilter:source", info.source);
     spec.attribute("cmfilter:source_sha256", info.source_sha256);
-    spec.attribute("cmfilter:source_size",
-                   std::to_string(info.width) + "x" + std::to_string(info.height));
+    spec.attribute("cmfilter:source_size", std::to_string(info.width) + "x" + std::to_string(info.height));
     spec.attribute("cmfilter:nonfinite_replaced", std::to_string(info.nonfinite_replaced));
 }
 
-Expected<HistogramPyramidInfo> get_histogram_pyramid_metadata(const OIIO::ImageSpec& spec,
-                                                              const std::string& path)
+Expected<HistogramPyramidInfo> get_histogram_pyramid_metadata(const OIIO::ImageSpec& spec, const std::string& path)
 {
     const std::string kind = spec.get_string_attribute("cmfilter:kind");
     if (kind != kHistogramPyramidKind)
-        return bad_input("'" + path + "' is not a cmfilter histogram pyramid (cmfilter:kind is '" +
-                         kind + "', expected '" + kHistogramPyramidKind + "')");
+        return bad_input("'" + path + "' is not a cmfilter histogram pyramid (cmfilter:kind is '" + kind +
+                         "', expected '" + kHistogramPyramidKind + "')");
     const int version = spec.get_int_attribute("cmfilter:format_version", 0);
     if (version != kHistogramPyramidFormatVersion)
-        return bad_input("'" + path + "' has histogram pyramid format version " +
-                         std::to_string(version) + ", this cmfilter reads version " +
-                         std::to_string(kHistogramPyramidFormatVersion));
+        return bad_input("'" + path + "' has histogram pyramid format version " + std::to_string(version) +
+                         ", this cmfilter reads version " + std::to_string(kHistogramPyramidFormatVersion));
     HistogramPyramidInfo info;
     info.width = spec.width;
     info.height = spec.height;
@@ -63,8 +59,8 @@ Expected<HistogramPyramidInfo> get_histogram_pyramid_metadata(const OIIO::ImageS
     info.channel = spec.get_string_attribute("cmfilter:channel");
     info.source = spec.get_string_attribute("cmfilter:source");
     info.source_sha256 = spec.get_string_attribute("cmfilter:source_sha256");
-    info.nonfinite_replaced = std::strtoull(
-        spec.get_string_attribute("cmfilter:nonfinite_replaced").c_str(), nullptr, 10);
+    info.nonfinite_replaced =
+        std::strtoull(spec.get_string_attribute("cmfilter:nonfinite_replaced").c_str(), nullptr, 10);
     info.baked_by = spec.get_string_attribute("cmfilter:version");
     auto wrap = parse_texture_wrap(spec.get_string_attribute("cmfilter:wrap"));
     const int bins = static_cast<int>(info.values.size());
@@ -72,7 +68,8 @@ Expected<HistogramPyramidInfo> get_histogram_pyramid_metadata(const OIIO::ImageS
     for (double v : info.values) finite = finite && std::isfinite(v);
     if (!wrap || info.levels < 1 || bins < 1 || bins > kHistogramMaxValues || !finite ||
         bins != spec.get_int_attribute("cmfilter:bins", -1) || spec.nchannels != bins)
-        return bad_input("'" + path + "' has inconsistent cmfilter metadata (wrap, level count, "
+        return bad_input("'" + path +
+                         "' has inconsistent cmfilter metadata (wrap, level count, "
                          "values or channel count missing or invalid)");
     info.wrap = *wrap;
     return info;

@@ -16,12 +16,10 @@ void set_moment_pyramid_metadata(OIIO::ImageSpec& spec, const MomentPyramidInfo&
     spec.attribute("cmfilter:kind", kMomentPyramidKind);
     spec.attribute("cmfilter:format_version", kMomentPyramidFormatVersion);
     spec.attribute("cmfilter:version", version());
-    spec.attribute("cmfilter:equation",
-                   "per level: box means of (f - c) and (f - c)^2; mean f = c + m1, "
-                   "sigma_f^2 = max(0, m2 - m1^2) (Heitz et al. 2013, sec. 4.2)");
-    spec.attribute("cmfilter:layout",
-                   "level k is max(1, W >> k) x max(1, H >> k); texel (x, y) of level k is the "
-                   "box mean over level-0 [x W / w_k, (x+1) W / w_k) x [y H / h_k, (y+1) H / h_k)");
+    spec.attribute("cmfilter:equation", "per level: box means of (f - c) and (f - c)^2; mean f = c + m1, "
+                                        "sigma_f^2 = max(0, m2 - m1^2) (Heitz et al. 2013, sec. 4.2)");
+    spec.attribute("cmfilter:layout", "level k is max(1, W >> k) x max(1, H >> k); texel (x, y) of level k is the "
+                                      "box mean over level-0 [x W / w_k, (x+1) W / w_k) x [y H / h_k, (y+1) H / h_k)");
     const auto dbl = [&](const char* name, double v) { set_double_attribute(spec, name, v); };
     dbl("cmfilter:reference", info.reference);
     dbl("cmfilter:driver_min", info.driver_min);
@@ -32,24 +30,21 @@ void set_moment_pyramid_metadata(OIIO::ImageSpec& spec, const MomentPyramidInfo&
     spec.attribute("cmfilter:channel_index", info.channel_index);
     spec.attribute("cmfilter:source", info.source);
     spec.attribute("cmfilter:source_sha256", info.source_sha256);
-    spec.attribute("cmfilter:source_size",
-                   std::to_string(info.width) + "x" + std::to_string(info.height));
+    spec.attribute("cmfilter:source_size", std::to_string(info.width) + "x" + std::to_string(info.height));
     spec.attribute("cmfilter:source_pixel_type", info.source_pixel_type);
     spec.attribute("cmfilter:nonfinite_replaced", std::to_string(info.nonfinite_replaced));
 }
 
-Expected<MomentPyramidInfo> get_moment_pyramid_metadata(const OIIO::ImageSpec& spec,
-                                                        const std::string& path)
+Expected<MomentPyramidInfo> get_moment_pyramid_metadata(const OIIO::ImageSpec& spec, const std::string& path)
 {
     const std::string kind = spec.get_string_attribute("cmfilter:kind");
     if (kind != kMomentPyramidKind)
-        return bad_input("'" + path + "' is not a cmfilter moment pyramid (cmfilter:kind is '" +
-                         kind + "', expected '" + kMomentPyramidKind + "')");
+        return bad_input("'" + path + "' is not a cmfilter moment pyramid (cmfilter:kind is '" + kind +
+                         "', expected '" + kMomentPyramidKind + "')");
     const int version = spec.get_int_attribute("cmfilter:format_version", 0);
     if (version != kMomentPyramidFormatVersion)
-        return bad_input("'" + path + "' has moment pyramid format version " +
-                         std::to_string(version) + ", this cmfilter reads version " +
-                         std::to_string(kMomentPyramidFormatVersion));
+        return bad_input("'" + path + "' has moment pyramid format version " + std::to_string(version) +
+                         ", this cmfilter reads version " + std::to_string(kMomentPyramidFormatVersion));
     const auto dbl = [&](const char* name) { return double_attribute(spec, name); };
     MomentPyramidInfo info;
     info.width = spec.width;
@@ -63,12 +58,13 @@ Expected<MomentPyramidInfo> get_moment_pyramid_metadata(const OIIO::ImageSpec& s
     info.source = spec.get_string_attribute("cmfilter:source");
     info.source_sha256 = spec.get_string_attribute("cmfilter:source_sha256");
     info.source_pixel_type = spec.get_string_attribute("cmfilter:source_pixel_type");
-    info.nonfinite_replaced = std::strtoull(
-        spec.get_string_attribute("cmfilter:nonfinite_replaced").c_str(), nullptr, 10);
+    info.nonfinite_replaced =
+        std::strtoull(spec.get_string_attribute("cmfilter:nonfinite_replaced").c_str(), nullptr, 10);
     info.baked_by = spec.get_string_attribute("cmfilter:version");
     auto wrap = parse_texture_wrap(spec.get_string_attribute("cmfilter:wrap"));
     if (!wrap || !std::isfinite(info.reference) || info.levels < 1 || spec.nchannels != 2)
-        return bad_input("'" + path + "' has inconsistent cmfilter metadata (wrap, reference "
+        return bad_input("'" + path +
+                         "' has inconsistent cmfilter metadata (wrap, reference "
                          "value, level count or channel count missing or invalid)");
     info.wrap = *wrap;
     return info;

@@ -22,14 +22,14 @@ struct MomentPyramidInfo {
     int levels = 0;             // down to 1 x 1
     double reference = 0;       // c: channels hold box means of (f - c) and (f - c)^2
     double driver_min = 0, driver_max = 0;
-    std::string channel;        // the driver channel used (name, else its index)
+    std::string channel;  // the driver channel used (name, else its index)
     int channel_index = 0;
     TextureWrap wrap = TextureWrap::Clamp;
-    std::string source;         // driver path as given
+    std::string source;  // driver path as given
     std::string source_sha256;
     std::string source_pixel_type;
     std::size_t nonfinite_replaced = 0;
-    std::string baked_by;       // cmfilter version (filled in on write)
+    std::string baked_by;  // cmfilter version (filled in on write)
 };
 
 // Sets the cmfilter:* attributes (and the "wrapmodes" TextureSystem reads) on
@@ -39,7 +39,6 @@ void set_moment_pyramid_metadata(OIIO::ImageSpec& spec, const MomentPyramidInfo&
 // Reads them back from a file's level-0 spec. BadInput naming `path` when the
 // file is not a moment pyramid, has another format version, or its metadata
 // is missing or inconsistent with its size.
-Expected<MomentPyramidInfo> get_moment_pyramid_metadata(const OIIO::ImageSpec& spec,
-                                                        const std::string& path);
+Expected<MomentPyramidInfo> get_moment_pyramid_metadata(const OIIO::ImageSpec& spec, const std::string& path);
 
 }  // namespace cmfilter

@@ -61,8 +61,7 @@ MomentSample MomentTexture::lookup(float s, float t, float lod) const
     return finish(ok, m);
 }
 
-MomentSample MomentTexture::lookup(float s, float t, float dsdx, float dtdx, float dsdy,
-                                   float dtdy) const
+MomentSample MomentTexture::lookup(float s, float t, float dsdx, float dtdx, float dsdy, float dtdy) const
 {
     OIIO::TextureOpt opt;
     opt.interpmode = OIIO::TextureOpt::InterpBilinear;

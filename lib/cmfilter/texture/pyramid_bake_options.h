@@ -13,13 +13,13 @@ namespace cmfilter {
 
 struct PyramidBakeOptions {
     std::string driver_path;
-    std::string output_path;                         // .exr, written atomically
-    std::string channel;                             // name or index; empty: single-channel driver
+    std::string output_path;  // .exr, written atomically
+    std::string channel;      // name or index; empty: single-channel driver
     NonFinitePolicy nonfinite = NonFinitePolicy::Error;
     TextureWrap wrap = TextureWrap::Clamp;
-    int tile_size = 64;                              // square tiles, as maketx's default
-    std::string compression = "zip";                 // OpenEXR compression, as maketx's default
-    int threads = 0;                                 // 0: all cores
+    int tile_size = 64;               // square tiles, as maketx's default
+    std::string compression = "zip";  // OpenEXR compression, as maketx's default
+    int threads = 0;                  // 0: all cores
 
     DriverReadOptions driver_read() const
     {

@@ -23,16 +23,13 @@ Status check_tiled_mipmap(OIIO::ImageInput& in, int levels, const std::string& p
 std::shared_ptr<OIIO::TextureSystem> make_private_texture_system()
 {
     return std::shared_ptr<OIIO::TextureSystem>(
-        OIIO::TextureSystem::create(false),
-        [](OIIO::TextureSystem* ts) { OIIO::TextureSystem::destroy(ts, true); });
+        OIIO::TextureSystem::create(false), [](OIIO::TextureSystem* ts) { OIIO::TextureSystem::destroy(ts, true); });
 }
 
 int reachable_texture_levels(int width, int height, int levels)
 {
     int k = 0;
-    while (k + 1 < levels &&
-           std::min(moment_level_extent(width, k), moment_level_extent(height, k)) > 1)
-        ++k;
+    while (k + 1 < levels && std::min(moment_level_extent(width, k), moment_level_extent(height, k)) > 1) ++k;
     return k + 1;
 }
 
@@ -51,8 +48,7 @@ TextureLod texture_lod(int width, int height, int levels, float lod)
     const int k = static_cast<int>(std::floor(out.lod));
     const float frac = out.lod - static_cast<float>(k);
     const auto minwh = [&](int level) {
-        return static_cast<float>(
-            std::min(moment_level_extent(width, level), moment_level_extent(height, level)));
+        return static_cast<float>(std::min(moment_level_extent(width, level), moment_level_extent(height, level)));
     };
     if (frac > 0) {
         out.filter_width = (1.0f + frac) / (2.0f * minwh(k + 1));
@@ -64,9 +60,6 @@ TextureLod texture_lod(int width, int height, int levels, float lod)
     return out;
 }
 
-double trilinear_lod_for_box(double box_lod)
-{
-    return box_lod - 0.5 * std::log2(3.0);
-}
+double trilinear_lod_for_box(double box_lod) { return box_lod - 0.5 * std::log2(3.0); }
 
 }  // namespace cmfilter

@@ -19,15 +19,12 @@ Expected<AtomicOutput> AtomicOutput::begin(const std::string& destination)
     if (dir.empty()) dir = ".";
     std::error_code ec;
     if (!fs::is_directory(dir, ec))
-        return io_error("cannot write '" + destination + "': directory '" + dir.string() +
-                        "' does not exist");
-    if (fs::is_directory(dest, ec))
-        return io_error("cannot write '" + destination + "': it is a directory");
+        return io_error("cannot write '" + destination + "': directory '" + dir.string() + "' does not exist");
+    if (fs::is_directory(dest, ec)) return io_error("cannot write '" + destination + "': it is a directory");
 
     std::random_device entropy;
     std::ostringstream name;
-    name << "." << dest.stem().string() << ".tmp-" << std::hex << entropy() << entropy()
-         << dest.extension().string();
+    name << "." << dest.stem().string() << ".tmp-" << std::hex << entropy() << entropy() << dest.extension().string();
     AtomicOutput out;
     out.destination_ = destination;
     out.temp_ = (dir / name.str()).string();
@@ -45,8 +42,7 @@ Status check_output_path(const std::string& path, const std::string& extension)
 {
     if (!extension.empty()) {
         if (lowercase_extension(path) != extension)
-            return bad_input("output '" + path + "' has the wrong extension (expected a " +
-                             extension + " file)");
+            return bad_input("output '" + path + "' has the wrong extension (expected a " + extension + " file)");
     }
     auto probe = AtomicOutput::begin(path);
     if (!probe) return probe.error();
@@ -54,8 +50,7 @@ Status check_output_path(const std::string& path, const std::string& extension)
 }
 
 AtomicOutput::AtomicOutput(AtomicOutput&& other) noexcept
-    : destination_(std::move(other.destination_)), temp_(std::move(other.temp_)),
-      committed_(other.committed_)
+    : destination_(std::move(other.destination_)), temp_(std::move(other.temp_)), committed_(other.committed_)
 {
     other.temp_.clear();
 }

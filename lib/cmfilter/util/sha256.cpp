@@ -67,8 +67,7 @@ void compress_portable(std::uint32_t* hash, const unsigned char* m, std::size_t 
         for (int t = 0; t < 16; ++t)
             w[t] = (std::uint32_t{m[4 * t]} << 24) | (std::uint32_t{m[4 * t + 1]} << 16) |
                    (std::uint32_t{m[4 * t + 2]} << 8) | std::uint32_t{m[4 * t + 3]};
-        for (int t = 16; t < 64; ++t)
-            w[t] = small_sigma1(w[t - 2]) + w[t - 7] + small_sigma0(w[t - 15]) + w[t - 16];
+        for (int t = 16; t < 64; ++t) w[t] = small_sigma1(w[t - 2]) + w[t - 7] + small_sigma0(w[t - 15]) + w[t - 16];
 
         // Step 2: initialise the working variables a..h from H(i-1).
         std::uint32_t a = hash[0], b = hash[1], c = hash[2], d = hash[3];
@@ -89,8 +88,14 @@ void compress_portable(std::uint32_t* hash, const unsigned char* m, std::size_t 
         }
 
         // Step 4: the intermediate hash value H(i).
-        hash[0] += a; hash[1] += b; hash[2] += c; hash[3] += d;
-        hash[4] += e; hash[5] += f; hash[6] += g; hash[7] += h;
+        hash[0] += a;
+        hash[1] += b;
+        hash[2] += c;
+        hash[3] += d;
+        hash[4] += e;
+        hash[5] += f;
+        hash[6] += g;
+        hash[7] += h;
     }
 }
 
@@ -100,8 +105,8 @@ void compress_portable(std::uint32_t* hash, const unsigned char* m, std::size_t 
 // with W_t + K_t taken from the low 64 bits of its third operand, SHA256MSG1
 // and SHA256MSG2 compute the message schedule (section 6.2.2, step 1) four
 // words at a time.
-__attribute__((target("sha,sse4.1,ssse3")))
-void compress_x86_sha(std::uint32_t* hash, const unsigned char* m, std::size_t blocks)
+__attribute__((target("sha,sse4.1,ssse3"))) void compress_x86_sha(std::uint32_t* hash, const unsigned char* m,
+                                                                  std::size_t blocks)
 {
     const __m128i byte_swap = _mm_set_epi64x(0x0c0d0e0f08090a0bLL, 0x0405060700010203LL);
     __m128i dcba = _mm_loadu_si128(reinterpret_cast<const __m128i*>(hash));
@@ -116,11 +121,9 @@ void compress_x86_sha(std::uint32_t* hash, const unsigned char* m, std::size_t b
         __m128i w[4];  // W_{4g}..W_{4g+3} for the group g of four rounds, in w[g % 4]
         for (int g = 0; g < 16; ++g) {
             __m128i& cur = w[g % 4];
-            if (g < 4)
-                cur = _mm_shuffle_epi8(_mm_loadu_si128(reinterpret_cast<const __m128i*>(m + 16 * g)),
-                                       byte_swap);
-            __m128i wk = _mm_add_epi32(
-                cur, _mm_loadu_si128(reinterpret_cast<const __m128i*>(kRoundConstants.data() + 4 * g)));
+            if (g < 4) cur = _mm_shuffle_epi8(_mm_loadu_si128(reinterpret_cast<const __m128i*>(m + 16 * g)), byte_swap);
+            __m128i wk =
+                _mm_add_epi32(cur, _mm_loadu_si128(reinterpret_cast<const __m128i*>(kRoundConstants.data() + 4 * g)));
             cdgh = _mm_sha256rnds2_epu32(cdgh, abef, wk);
             if (g >= 3 && g < 15) {  // finish W for group g + 1 (its MSG1 part was done at g - 1)
                 __m128i& next = w[(g + 1) % 4];
@@ -203,8 +206,7 @@ public:
             fill_ = 0;
         }
         std::fill(block_.begin() + fill_, block_.begin() + 56, 0);
-        for (int i = 0; i < 8; ++i)
-            block_[56 + i] = static_cast<unsigned char>(bit_length >> (56 - 8 * i));
+        for (int i = 0; i < 8; ++i) block_[56 + i] = static_cast<unsigned char>(bit_length >> (56 - 8 * i));
         compress_(hash_.data(), block_.data(), 1);
         fill_ = 0;
 
@@ -243,10 +245,7 @@ std::string sha256_hex_portable(const void* data, std::size_t size)
     return hasher.finish_hex();
 }
 
-const char* sha256_implementation()
-{
-    return compress_blocks == compress_portable ? "portable" : "x86-sha";
-}
+const char* sha256_implementation() { return compress_blocks == compress_portable ? "portable" : "x86-sha"; }
 
 }  // namespace detail
 
@@ -255,8 +254,7 @@ Expected<std::string> sha256_file_hex(const std::string& path)
     // A directory opens as a stream on some platforms and then reads as empty;
     // refuse it rather than hash nothing.
     std::error_code ec;
-    if (std::filesystem::is_directory(path, ec))
-        return io_error("cannot read '" + path + "': it is a directory");
+    if (std::filesystem::is_directory(path, ec)) return io_error("cannot read '" + path + "': it is a directory");
     std::ifstream in(path, std::ios::binary);
     if (!in) return io_error("cannot read '" + path + "': cannot open the file to hash it");
     Sha256 hasher;
@@ -264,9 +262,7 @@ Expected<std::string> sha256_file_hex(const std::string& path)
     while (in) {
         in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
         const std::streamsize got = in.gcount();
-        if (got > 0)
-            hasher.update(reinterpret_cast<const unsigned char*>(chunk.data()),
-                          static_cast<std::size_t>(got));
+        if (got > 0) hasher.update(reinterpret_cast<const unsigned char*>(chunk.data()), static_cast<std::size_t>(got));
     }
     if (in.bad()) return io_error("cannot read '" + path + "': a read failed while hashing it");
     return hasher.finish_hex();

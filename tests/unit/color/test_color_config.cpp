@@ -22,7 +22,8 @@ TEST_CASE("sRGB decoding matches the IEC 61966-2-1 formula for every 8-bit code"
     for (int code = 0; code < 256; ++code) {
         const double e = code / 255.0;
         worst_iec = std::max(worst_iec, std::fabs(rgb[3 * code + 1] - cmfilter_test::srgb_to_linear(e)));
-        worst_moncurve = std::max(worst_moncurve, std::fabs(rgb[3 * code + 1] - cmfilter_test::srgb_moncurve_to_linear(e)));
+        worst_moncurve =
+            std::max(worst_moncurve, std::fabs(rgb[3 * code + 1] - cmfilter_test::srgb_moncurve_to_linear(e)));
     }
     // The built-in sRGB space is OpenColorIO's C1 moncurve: it matches the IEC
     // formula except in the toe (codes 10 and below), where the two curves'

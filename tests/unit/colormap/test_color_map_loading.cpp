@@ -30,7 +30,8 @@ TEST_CASE("an 8-bit PNG is decoded as sRGB and laid over the domain")
     REQUIRE(loaded);
     REQUIRE(loaded->map.size() == 3);
     for (int i = 0; i < 9; ++i)
-        CHECK(loaded->map.texels[i / 3][i % 3] == doctest::Approx(cmfilter_test::srgb_to_linear(px[i] / 255.0)).epsilon(1e-5));
+        CHECK(loaded->map.texels[i / 3][i % 3] ==
+              doctest::Approx(cmfilter_test::srgb_to_linear(px[i] / 255.0)).epsilon(1e-5));
     CHECK(loaded->map.vmin == -1);
     CHECK(loaded->map.vmax == 2);
     CHECK(loaded->provenance.colorspace == "sRGB Encoded Rec.709");
@@ -53,7 +54,8 @@ TEST_CASE("a float EXR is linear by default, and --colorspace overrides the file
     auto acescg = load_color_map(opt, cmfilter_test::builtin_color_config());
     REQUIRE(acescg);
     // Row 1 of the AP1 -> Rec.709 matrix applied to (0.5, 0.25, 2.0).
-    CHECK(acescg->map.texels[0].g == doctest::Approx(-0.1302564 * 0.5 + 1.1408047 * 0.25 - 0.0105483 * 2.0).epsilon(1e-4));
+    CHECK(acescg->map.texels[0].g ==
+          doctest::Approx(-0.1302564 * 0.5 + 1.1408047 * 0.25 - 0.0105483 * 2.0).epsilon(1e-4));
     CHECK(acescg->provenance.colorspace_rule == "--colorspace");
 }
 
@@ -65,7 +67,9 @@ TEST_CASE("rows and columns of a larger image, grey replicated")
     write_image(path, 4, 3, 1, OIIO::TypeDesc::FLOAT, px.data());
     ColorMapLoadOptions opt;
     opt.path = path;
-    CHECK(load_color_map(opt, cmfilter_test::builtin_color_config()).error().message.find("pass --row N or --column N") != std::string::npos);
+    CHECK(
+        load_color_map(opt, cmfilter_test::builtin_color_config()).error().message.find("pass --row N or --column N") !=
+        std::string::npos);
     opt.row = 1;
     auto row = load_color_map(opt, cmfilter_test::builtin_color_config());
     REQUIRE(row);

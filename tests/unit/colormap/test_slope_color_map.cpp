@@ -56,8 +56,8 @@ TEST_CASE("a steepness map reads its 1-D map at the slope angle in degrees")
         const double u = std::tan(60 * kPi / 180);
         check_rgb(map.evaluate(u * std::cos(azimuth), u * std::sin(azimuth)), {1, 0.75, 0.5}, 1e-12);
     }
-    check_rgb(map.evaluate(0, 0), {0, 0, 0}, 0);        // flat: clamped below 15
-    check_rgb(map.evaluate(1e300, 0), {1, 1, 1}, 0);    // vertical: clamped above 75
+    check_rgb(map.evaluate(0, 0), {0, 0, 0}, 0);      // flat: clamped below 15
+    check_rgb(map.evaluate(1e300, 0), {1, 1, 1}, 0);  // vertical: clamped above 75
 }
 
 TEST_CASE("a slope-vector map puts row 0 at +s_max, interpolates bilinearly and clamps beyond")
@@ -102,8 +102,8 @@ TEST_CASE("a slope-vector map loads from an image, top row at +s_max, decoded to
     const std::string dir = cmfilter_test::temp_dir("cmfilter-test-slope-color-map");
     const std::string path = dir + "/wheel.png";
     // 2 x 2, 8-bit: sRGB by default.
-    const unsigned char px[] = {255, 0, 0, 0, 255, 0,    // row 0
-                                0, 0, 255, 128, 128, 128};  // row 1
+    const unsigned char px[] = {255, 0, 0,   0,   255, 0,     // row 0
+                                0,   0, 255, 128, 128, 128};  // row 1
     cmfilter_test::write_image(path, 2, 2, 3, OIIO::TypeDesc::UINT8, px);
     SlopeVectorColorMapLoadOptions options;
     options.path = path;

@@ -64,7 +64,9 @@ json snake_patch(double view, double light)
     const double t = radians(view), l = radians(light);
     json scene;
     scene["camera"] = {{"position", {distance * std::sin(t), distance * std::cos(t), 0}},
-                       {"look_at", {0, 0, 0}}, {"up", {0, 0, 1}}, {"fov_degrees", fov},
+                       {"look_at", {0, 0, 0}},
+                       {"up", {0, 0, 1}},
+                       {"fov_degrees", fov},
                        {"resolution", {size, size}}};
     scene["light"] = {{"direction", {-std::sin(l), std::cos(l), 0}}, {"radiance", {1, 1, 1}}};
     scene["background"] = {0, 0, 0};
@@ -73,10 +75,12 @@ json snake_patch(double view, double light)
                                 {"height_scale", 0.5}};
     material["slope_colormap"] = {{"image", std::string(CMFILTER_SOURCE_DIR) + "/luts/snake-rims.png"},
                                   {"by", "steepness"}};
-    scene["surfaces"] = json::array({{{"type", "plane"}, {"point", {0, 0, 0}}, {"normal", {0, 1, 0}},
-                                      {"mapping", {{"type", "planar"}, {"origin", {0, 0, 0}},
-                                                   {"u_axis", {1, 0, 0}}, {"v_axis", {0, 0, 1}}}},
-                                      {"material", material}}});
+    scene["surfaces"] = json::array(
+        {{{"type", "plane"},
+          {"point", {0, 0, 0}},
+          {"normal", {0, 1, 0}},
+          {"mapping", {{"type", "planar"}, {"origin", {0, 0, 0}}, {"u_axis", {1, 0, 0}}, {"v_axis", {0, 0, 1}}}},
+          {"material", material}}});
     return scene;
 }
 

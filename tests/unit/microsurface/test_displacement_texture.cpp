@@ -51,9 +51,9 @@ std::vector<float> smooth_texels(int n)
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
             const double x = (i + 0.5) / n, y = (j + 0.5) / n;
-            v[static_cast<std::size_t>(j) * n + i] =
-                static_cast<float>(0.6 * std::cos(2 * kPi * (x + 2 * y) + 0.3) + 0.3 * std::cos(2 * kPi * 3 * x - 1.1) +
-                                   0.2 * std::sin(2 * kPi * (2 * x - 3 * y)));
+            v[static_cast<std::size_t>(j) * n + i] = static_cast<float>(0.6 * std::cos(2 * kPi * (x + 2 * y) + 0.3) +
+                                                                        0.3 * std::cos(2 * kPi * 3 * x - 1.1) +
+                                                                        0.2 * std::sin(2 * kPi * (2 * x - 3 * y)));
         }
     return v;
 }
@@ -229,7 +229,8 @@ TEST_CASE("displacement slopes match maketx --bumpslopes away from the edges of 
         for (int x = 1; x < n - 1; ++x) {
             const auto [sx, sy] = t.texel_slope(x, y);
             const float* p = &L.pixels[(std::size_t(y) * n + x) * 6];
-            worst = std::max({worst, std::abs(sx - p[1]), std::abs(sy - p[2]), std::abs(sx * sy - p[5]) / (1 + std::abs(p[5]))});
+            worst = std::max(
+                {worst, std::abs(sx - p[1]), std::abs(sy - p[2]), std::abs(sx * sy - p[5]) / (1 + std::abs(p[5]))});
         }
     CHECK(worst <= 1e-5);
 }
@@ -302,9 +303,9 @@ TEST_CASE("displacement footprint moments against brute force from sub-texel to 
         double rel_tol = 0;  // under a texel: of the footprint's own spread
     };
     const Case cases[] = {
-        {0.05, 1, 0.3, 1e-3, 1e-3, 0.02},  {0.3, 0.5, 1.0, 2e-3, 1e-3, 0.02}, {1.0, 1, 0.2, 0.05, 0.015},
-        {3.0, 1, 0.7, 0.06, 0.1},    {8.0, 0.125, 0.4, 0.03, 0.05}, {10.0, 1, 2.1, 0.1, 0.12},
-        {32.0, 1, 0.1, 0.06, 0.04},  {100.0, 0.7, 0.9, 0.08, 0.02}, {400.0, 0.05, 1.3, 0.02, 0.006},
+        {0.05, 1, 0.3, 1e-3, 1e-3, 0.02}, {0.3, 0.5, 1.0, 2e-3, 1e-3, 0.02}, {1.0, 1, 0.2, 0.05, 0.015},
+        {3.0, 1, 0.7, 0.06, 0.1},         {8.0, 0.125, 0.4, 0.03, 0.05},     {10.0, 1, 2.1, 0.1, 0.12},
+        {32.0, 1, 0.1, 0.06, 0.04},       {100.0, 0.7, 0.9, 0.08, 0.02},     {400.0, 0.05, 1.3, 0.02, 0.006},
     };
     std::mt19937_64 rng(11);
     std::uniform_real_distribution<double> uni(0.0, 1.0);
@@ -423,8 +424,8 @@ TEST_CASE("Heightfield::from_nodes refuses grids it cannot trace")
     CHECK(Heightfield::from_nodes(std::vector<double>(9, 0.0), 3, 1.0).error().kind == ErrorKind::BadInput);
     CHECK(Heightfield::from_nodes(std::vector<double>(15, 0.0), 4, 1.0).error().kind == ErrorKind::BadInput);
     CHECK(Heightfield::from_nodes(std::vector<double>(16, 0.0), 4, 0.0).error().kind == ErrorKind::BadInput);
-    CHECK(Heightfield::from_nodes(std::vector<double>(16, 0.0), 4, 1.0, std::vector<double>(16, 0.0))
-              .error().kind == ErrorKind::BadInput);
+    CHECK(Heightfield::from_nodes(std::vector<double>(16, 0.0), 4, 1.0, std::vector<double>(16, 0.0)).error().kind ==
+          ErrorKind::BadInput);
     std::vector<double> nan(16, 0.0);
     nan[5] = std::nan("");
     const auto bad = Heightfield::from_nodes(nan, 4, 1.0);

@@ -39,7 +39,8 @@ TEST_CASE("microsurface statistics measured over random points match its exact s
         m4 += h * h * h * h;
         for (int a = 0; a < 3; ++a) {
             const double dx = std::cos(azimuths[a]), dy = std::sin(azimuths[a]);
-            const double d = (s->height(x + eps * dx, y + eps * dy) - s->height(x - eps * dx, y - eps * dy)) / (2 * eps);
+            const double d = (s->height(x + eps * dx, y + eps * dy) - s->height(x - eps * dx, y - eps * dy)) /
+                             (2 * eps);
             slope2[a] += d * d;
         }
         if (k < 100) {

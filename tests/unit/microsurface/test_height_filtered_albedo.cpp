@@ -106,8 +106,8 @@ HeightQuadrature height_quadrature(double lambda_sum, double sigma_h)
     HeightQuadrature q;
     for (int k = 0; k <= n; ++k) {
         const double x = lo + k * step;
-        const double log_density =
-            std::log1p(L) + (L > 0 ? L * log_phi_cdf(x) : 0.0) - 0.5 * x * x - 0.5 * std::log(2 * kPi);
+        const double log_density = std::log1p(L) + (L > 0 ? L * log_phi_cdf(x) : 0.0) - 0.5 * x * x -
+                                   0.5 * std::log(2 * kPi);
         const double w = std::exp(log_density) * step * ((k == 0 || k == n) ? 0.5 : 1.0);
         q.heights.push_back(sigma_h * x);
         q.weights.push_back(w);
@@ -177,9 +177,8 @@ TEST_CASE("the albedo of an unresolved footprint matches Smith's integral and qu
     struct Case {
         double theta_o, phi_o, theta_i, phi_i;
     };
-    const Case cases[] = {{0, 0, 0, 0},          {35, 0.3, 50, 2.0},     {70, 1.1, 20, -2.5},
-                          {80, -0.4, 85, 0.9},    {88, 2.8, 89.5, 0.1},   {89.9, 0.5, 60, 1.5},
-                          {89.999, 0.2, 89.99, 1.0}};
+    const Case cases[] = {{0, 0, 0, 0},         {35, 0.3, 50, 2.0},   {70, 1.1, 20, -2.5},      {80, -0.4, 85, 0.9},
+                          {88, 2.8, 89.5, 0.1}, {89.9, 0.5, 60, 1.5}, {89.999, 0.2, 89.99, 1.0}};
     double largest_l = 0;
     for (const Case& c : cases) {
         CAPTURE(c.theta_o);
@@ -226,8 +225,8 @@ TEST_CASE("the albedo of an unresolved footprint matches Smith's integral and qu
         CHECK(paper.mean == doctest::Approx(f.mean_height + fit_mean).epsilon(1e-6));
         CHECK(paper.sigma == doctest::Approx(fit_sigma).epsilon(1e-6));
         const double fit_error = local_table_error(heights, f.mean_height + fit_mean, fit_sigma);
-        CHECK(largest_difference(paper.albedo, V * gaussian_reference(heights.map, f.mean_height + fit_mean, fit_sigma)) <=
-              2 * fit_error + 1e-7);
+        CHECK(largest_difference(paper.albedo, V * gaussian_reference(heights.map, f.mean_height + fit_mean,
+                                                                      fit_sigma)) <= 2 * fit_error + 1e-7);
 
         // Naive: the resolved mean's colour, unmasked.
         const HeightAlbedo naive =
@@ -285,7 +284,9 @@ TEST_CASE("a point footprint gives C_h at the point's height, shadowed only by t
     AlbedoCounts counts;
     std::mt19937_64 rng(17);
     std::uniform_real_distribution<double> at(-5, 5);
-    const HeightDirections directions[] = {{0, 0, 0, 0}, {degrees(60), 0.5, 0, 0}, {degrees(60), 0.5, degrees(75), 2},
+    const HeightDirections directions[] = {{0, 0, 0, 0},
+                                           {degrees(60), 0.5, 0, 0},
+                                           {degrees(60), 0.5, degrees(75), 2},
                                            {degrees(89), -1, degrees(30), 0.2}};
     for (int k = 0; k < 40; ++k) {
         const double u = at(rng), v = at(rng);

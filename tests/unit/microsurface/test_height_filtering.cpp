@@ -58,9 +58,9 @@ HeightMoments moments_by_exponential(double L)
     const int n = 200000;
     double m1 = 0, m2 = 0;
     for (int k = 0; k < n; ++k) {
-        const double v = (k + 0.5) / n;            // v uniform: t = -ln(1 - v)
+        const double v = (k + 0.5) / n;  // v uniform: t = -ln(1 - v)
         const double t = -std::log1p(-v);
-        const double logu = -t / (L + 1);          // ln u
+        const double logu = -t / (L + 1);  // ln u
         // x = Phi^-1(u) with u = e^{logu}: close to 1 read from its complement.
         const double x = logu > -1e-3 ? -normal_quantile(-std::expm1(logu)) : normal_quantile(std::exp(logu));
         m1 += x;

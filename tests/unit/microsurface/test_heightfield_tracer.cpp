@@ -239,8 +239,10 @@ TEST_CASE("trace and occluded give the same answers as a dense march with bisect
             const double fv = hit->point.y / ref.texel - std::floor(hit->point.y / ref.texel);
             if (std::min({fu, fv, 1 - fu, 1 - fv}) > 1e-3) {
                 const double e = 1e-6 * ref.texel;
-                const double gx = (ref.at(hit->point.x + e, hit->point.y) - ref.at(hit->point.x - e, hit->point.y)) / (2 * e);
-                const double gy = (ref.at(hit->point.x, hit->point.y + e) - ref.at(hit->point.x, hit->point.y - e)) / (2 * e);
+                const double gx = (ref.at(hit->point.x + e, hit->point.y) - ref.at(hit->point.x - e, hit->point.y)) /
+                                  (2 * e);
+                const double gy = (ref.at(hit->point.x, hit->point.y + e) - ref.at(hit->point.x, hit->point.y - e)) /
+                                  (2 * e);
                 const double norm = std::sqrt(gx * gx + gy * gy + 1);
                 CHECK(std::abs(hit->normal.x - (-gx / norm)) <= 1e-6);
                 CHECK(std::abs(hit->normal.y - (-gy / norm)) <= 1e-6);
@@ -464,8 +466,8 @@ TEST_CASE("the share of the seen surface that is lit follows masking and shadowi
     // 0.957, at 80 0.837 / 0.831 / 0.813; phi 180 at 80 0.795 / 0.823 /
     // 0.813 (there the surface shadows more than Smith says either way, as
     // above). Tolerances: about twice the measured gaps.
-    for (const Case c : {Case{70, 0, 0.005}, Case{80, 0, 0.005}, Case{70, 90, 0.01}, Case{80, 90, 0.015},
-                         Case{80, 180, 0.06}}) {
+    for (const Case c :
+         {Case{70, 0, 0.005}, Case{80, 0, 0.005}, Case{70, 90, 0.01}, Case{80, 90, 0.015}, Case{80, 180, 0.06}}) {
         CAPTURE(c.theta);
         CAPTURE(c.phi_degrees);
         const double theta = c.theta * kPi / 180, phi = c.phi_degrees * kPi / 180;

@@ -113,8 +113,9 @@ TEST_CASE("the resolved part's spread is the spread of the box-filtered heights 
     for (int k = 0; k < centres; ++k) {
         const double u = 23.1 * std::sin(1.3 * k + 0.2), v = 19.7 * std::cos(0.7 * k);
         const double h = filter_microsurface(s, u, v, e1u, e1v, e2u, e2v).mean_height;
-        const double ahead = filter_microsurface(s, u + step * std::cos(azimuth), v + step * std::sin(azimuth), e1u,
-                                                 e1v, e2u, e2v).mean_height;
+        const double ahead =
+            filter_microsurface(s, u + step * std::cos(azimuth), v + step * std::sin(azimuth), e1u, e1v, e2u, e2v)
+                .mean_height;
         h2 += h * h / centres;
         d2 += (ahead - h) * (ahead - h) / (step * step) / centres;
     }

@@ -60,8 +60,8 @@ SlopeVectorColorMap vector_map()
     map.width = 4;
     map.height = 3;
     map.s_max = 0.8;
-    map.texels = {{0.9, 0.1, 0.1}, {0.7, 0.5, 0.1}, {0.3, 0.8, 0.2}, {0.1, 0.6, 0.6},
-                  {0.2, 0.2, 0.9}, {0.5, 0.1, 0.7}, {0.5, 0.5, 0.5}, {0.05, 0.05, 0.05},
+    map.texels = {{0.9, 0.1, 0.1},    {0.7, 0.5, 0.1}, {0.3, 0.8, 0.2}, {0.1, 0.6, 0.6},
+                  {0.2, 0.2, 0.9},    {0.5, 0.1, 0.7}, {0.5, 0.5, 0.5}, {0.05, 0.05, 0.05},
                   {0.95, 0.95, 0.95}, {0.6, 0.3, 0.0}, {0.0, 0.4, 0.8}, {0.3, 0.3, 0.1}};
     return map;
 }
@@ -76,7 +76,8 @@ struct Case {
 std::vector<Case> cases()
 {
     std::vector<Case> out;
-    for (const SlopeMap& map : {SlopeMap{steepness_map()}, SlopeMap{repeating_steepness_map()}, SlopeMap{vector_map()}}) {
+    for (const SlopeMap& map :
+         {SlopeMap{steepness_map()}, SlopeMap{repeating_steepness_map()}, SlopeMap{vector_map()}}) {
         MicrosurfaceColors m;
         m.slope = map;
         out.push_back({"slope map " + std::to_string(map.index()), m, slope_range(map)});
@@ -127,9 +128,8 @@ const double kThetas[] = {0, 1e-6, 30, 60, 85, 89, 89.999, 90, 91};
 struct Covariance {
     double xx, xy, yy;
 };
-const Covariance kCovariances[] = {{0, 0, 0},         {1e-14, 0, 1e-14},    {0.04, 0.01, 0.09}, {1, 0, 1},
-                                   {2, 0, 1e-8},      {1, 0, 0},            {0.5, 0.5, 0.5},    {1, 0.9999999, 1},
-                                   {1e3, 0, 1e3},     {1e3, -300, 1e-3}};
+const Covariance kCovariances[] = {{0, 0, 0}, {1e-14, 0, 1e-14}, {0.04, 0.01, 0.09}, {1, 0, 1},     {2, 0, 1e-8},
+                                   {1, 0, 0}, {0.5, 0.5, 0.5},   {1, 0.9999999, 1},  {1e3, 0, 1e3}, {1e3, -300, 1e-3}};
 
 struct Slope {
     double x, y;
@@ -303,9 +303,8 @@ std::vector<std::pair<std::string, DisplacementTexture>> displacements()
     out.push_back({"flat", *flat});
     o.path = "steps";
     o.height_scale = 3;
-    auto steps = DisplacementTexture::from_texels({0.1f, 0.9f, 0.0f, 0.4f, 0.7f, 0.2f, 1.0f, 0.3f, 0.0f, 0.5f, 0.6f,
-                                                   0.95f, 0.35f, 0.05f, 0.8f, 0.15f},
-                                                  4, 4, o);
+    auto steps = DisplacementTexture::from_texels(
+        {0.1f, 0.9f, 0.0f, 0.4f, 0.7f, 0.2f, 1.0f, 0.3f, 0.0f, 0.5f, 0.6f, 0.95f, 0.35f, 0.05f, 0.8f, 0.15f}, 4, 4, o);
     REQUIRE(steps);
     out.push_back({"steps", *steps});
     return out;
@@ -321,10 +320,10 @@ TEST_CASE("displacement layers stay finite and in range on every angle, footprin
 {
     const HeightMomentTable table = *HeightMomentTable::create();
     const double inf = std::numeric_limits<double>::infinity();
-    const FootprintPiece pieces[] = {{0.3, 0.6, 0, 0, 0, 0},       {0.3, 0.6, 0.004, 0, 0, 0.002},
-                                     {0.3, 0.6, 0.2, 0.05, -0.01, 0.03}, {0.5, 0.5, 1, 0, 0, 1},
-                                     {1e5, -3e4, 2.5, 1, 0, 0.01},  {0.1, 0.2, 1e3, 0, 0, 1e3},
-                                     {0.1, 0.2, inf, 0, 0, inf}};
+    const FootprintPiece pieces[] = {
+        {0.3, 0.6, 0, 0, 0, 0},    {0.3, 0.6, 0.004, 0, 0, 0.002}, {0.3, 0.6, 0.2, 0.05, -0.01, 0.03},
+        {0.5, 0.5, 1, 0, 0, 1},    {1e5, -3e4, 2.5, 1, 0, 0.01},   {0.1, 0.2, 1e3, 0, 0, 1e3},
+        {0.1, 0.2, inf, 0, 0, inf}};
     AlbedoCounts counts;
     int checked = 0, failures = 0;
     for (const auto& [name, texture] : displacements())
@@ -353,11 +352,12 @@ TEST_CASE("displacement layers stay finite and in range on every angle, footprin
                             for (const Directions& dir : directions(r.slopes != SlopeRepresentation::Exact)) {
                                 const HeightDirections hd{degrees(dir.theta_o), dir.phi_o, degrees(dir.theta_i),
                                                           dir.phi_i};
-                                const MicrosurfaceLayers a = microsurface_layers(
-                                    m, f, ResolvedSlope{d.slope_x, d.slope_y}, hd, options, table, counts, &texture, &p);
+                                const MicrosurfaceLayers a =
+                                    microsurface_layers(m, f, ResolvedSlope{d.slope_x, d.slope_y}, hd, options, table,
+                                                        counts, &texture, &p);
                                 ++checked;
-                                const bool ok = std::isfinite(a.visibility) && a.visibility >= 0 &&
-                                                a.visibility <= 1 && is_finite(a.shadowed) &&
+                                const bool ok = std::isfinite(a.visibility) && a.visibility >= 0 && a.visibility <= 1 &&
+                                                is_finite(a.shadowed) &&
                                                 within_scaled_range(a.shadowed, range, a.visibility, 1e-6);
                                 if (!ok && ++failures <= 5) {
                                     CAPTURE(name);

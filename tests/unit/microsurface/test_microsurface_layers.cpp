@@ -202,7 +202,8 @@ TEST_CASE("combine_point_color is the weighted sum or the product of the layers 
     CHECK(p.r == doctest::Approx(base.r * slope.r).epsilon(1e-14));
 }
 
-TEST_CASE("combine_microsurface_albedo shadows the base layer by the mean visibility in a sum, multiplies it in a product")
+TEST_CASE(
+    "combine_microsurface_albedo shadows the base layer by the mean visibility in a sum, multiplies it in a product")
 {
     const Rgb base{0.3, 0.6, 0.15}, shadowed{0.21, 0.04, 0.33};
     const double v = 0.7;

@@ -37,9 +37,18 @@ namespace {
 // slightly beyond (below the surface: read as 90).
 std::vector<double> sweep_thetas()
 {
-    return {0.0,          degrees(1e-6),  degrees(30),     degrees(60),  degrees(85), degrees(89),
-            degrees(89.9), degrees(89.999), kPi / 2,        std::nextafter(kPi / 2, 4.0),
-            degrees(90.001), degrees(91)};
+    return {0.0,
+            degrees(1e-6),
+            degrees(30),
+            degrees(60),
+            degrees(85),
+            degrees(89),
+            degrees(89.9),
+            degrees(89.999),
+            kPi / 2,
+            std::nextafter(kPi / 2, 4.0),
+            degrees(90.001),
+            degrees(91)};
 }
 
 const std::vector<double> kSigmaH = {0.0, 1e-12, 1e-6, 0.008, 0.05};
@@ -74,9 +83,9 @@ TEST_CASE("Smith Lambda and the mean visibility stay finite and in range from 0 
             CHECK_FALSE(std::isnan(lambda));
             CHECK(lambda >= 0);
             if (theta < kPi / 2) CHECK(std::isfinite(lambda));  // eq. 3: finite below 90 degrees
-            else CHECK(lambda == kInf);                          // +infinity at and beyond 90
+            else CHECK(lambda == kInf);                         // +infinity at and beyond 90
             if (theta == 0) CHECK(lambda == 0);
-            if (s == 0 && theta < kPi / 2) CHECK(lambda == 0);   // a flat surface masks nothing
+            if (s == 0 && theta < kPi / 2) CHECK(lambda == 0);  // a flat surface masks nothing
             lambdas.push_back(lambda);
             // The same from cot theta.
             if (theta > 0 && theta < kPi / 2) {

@@ -27,7 +27,8 @@ SteepnessColorMap steps()
 {
     SteepnessColorMap map;
     map.by_angle.vmin = 0, map.by_angle.vmax = 90;
-    map.by_angle.texels = {{0.1, 0.4, 0.05}, {0.1, 0.4, 0.05}, {0.5, 0.45, 0.4}, {0.9, 0.1, 0.1}, {0.2, 0.2, 0.2}, {0.2, 0.2, 0.9}};
+    map.by_angle.texels = {{0.1, 0.4, 0.05}, {0.1, 0.4, 0.05}, {0.5, 0.45, 0.4},
+                           {0.9, 0.1, 0.1},  {0.2, 0.2, 0.2},  {0.2, 0.2, 0.9}};
     return map;
 }
 
@@ -52,7 +53,7 @@ SlopeVectorColorMap random_vector_map()
 // light_weighted_slope_map.h).
 template <typename Map>
 Rgb brute_force_color(const Map& map, const SlopeGaussian& g, double theta, double phi, int n,
-                       const LightDirection* light = nullptr)
+                      const LightDirection* light = nullptr)
 {
     const double ox = std::sin(theta) * std::cos(phi), oy = std::sin(theta) * std::sin(phi), oz = std::cos(theta);
     const double det = g.xx * g.yy - g.xy * g.xy;

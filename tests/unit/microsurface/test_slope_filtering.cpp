@@ -83,12 +83,12 @@ QuadratureMoments quadrature_moments(const SlopeGaussian& g, double theta, doubl
     const double v_lo = mu_v - 10 * sv, v_hi = mu_v + 10 * sv;
     const Sums sum = gauss_legendre_8(
         [&](double u) {
-            return gauss_legendre_8(
-                [&](double v) {
-                    const double x = sx_of(u, v), y = sy_of(u, v), w = weighted_density(x, y);
-                    return Sums{{w, w * x, w * y, w * x * x, w * x * y, w * y * y}};
-                },
-                v_lo, v_hi, panels_v);
+        return gauss_legendre_8(
+            [&](double v) {
+            const double x = sx_of(u, v), y = sy_of(u, v), w = weighted_density(x, y);
+            return Sums{{w, w * x, w * y, w * x * x, w * x * y, w * y * y}};
+            },
+            v_lo, v_hi, panels_v);
         },
         u_lo, u_hi, panels_u);
     QuadratureMoments r;
@@ -102,7 +102,10 @@ QuadratureMoments quadrature_moments(const SlopeGaussian& g, double theta, doubl
     return r;
 }
 
-SlopeGaussian isotropic(double sigma, double mx = 0, double my = 0) { return {mx, my, sigma * sigma, 0, sigma * sigma}; }
+SlopeGaussian isotropic(double sigma, double mx = 0, double my = 0)
+{
+    return {mx, my, sigma * sigma, 0, sigma * sigma};
+}
 
 // sigma along x, sigma / 3 along y, correlation 0.6.
 SlopeGaussian anisotropic(double sigma, double mx = 0, double my = 0)
@@ -266,7 +269,8 @@ TEST_CASE("exact slope moments tend to their limits as the spread vanishes")
     CHECK(c.xx == 0);
 }
 
-TEST_CASE("exact slope moments are finite over theta to exactly 90 degrees, any spread, near-singular covariances and large means")
+TEST_CASE(
+    "exact slope moments are finite over theta to exactly 90 degrees, any spread, near-singular covariances and large means")
 {
     int checked = 0;
     for (double theta : {0.0, 1e-9, 0.3, 1.0, 1.5, 1.5707, kPi / 2 - 1e-12, kPi / 2, 2.0, 1e300}) {
@@ -329,8 +333,9 @@ TEST_CASE("the continued fraction and the Mills-ratio forms agree where they mee
     const SlopeGaussian a{at, 0, 1, 0.3, 0.5}, b{below, 0, 1, 0.3, 0.5};
     const SlopeMoments ma = exact_slope_moments(a, {theta, 0}), mb = exact_slope_moments(b, {theta, 0});
     const double za = slope_filtering_normalisation(a, {theta, 0}), zb = slope_filtering_normalisation(b, {theta, 0});
-    const double differences[4] = {std::abs(ma.mean_x - mb.mean_x) / std::abs(ma.mean_x), std::abs(ma.xx - mb.xx) / ma.xx,
-                                   std::abs(ma.yy - mb.yy) / ma.yy, std::abs(za - zb) / za};
+    const double differences[4] = {std::abs(ma.mean_x - mb.mean_x) / std::abs(ma.mean_x),
+                                   std::abs(ma.xx - mb.xx) / ma.xx, std::abs(ma.yy - mb.yy) / ma.yy,
+                                   std::abs(za - zb) / za};
     const double worst = *std::max_element(differences, differences + 4);
     MESSAGE("largest relative difference across the branches: " << worst);
     CHECK(worst <= 1e-12);

@@ -30,8 +30,8 @@ struct Slope {
 // k * period, Q x Q midpoint quadrature) on C (the term at the square's
 // centre), over `footprints` centres uniform in [0, 256 period)^2, with the
 // slope's standard error from the residuals.
-Slope brute_force_slope(const std::function<double(double, double)>& term, double period, double k,
-                        int footprints, int q, std::uint64_t seed)
+Slope brute_force_slope(const std::function<double(double, double)>& term, double period, double k, int footprints,
+                        int q, std::uint64_t seed)
 {
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> centre(0.0, 256.0 * period);
@@ -41,8 +41,7 @@ Slope brute_force_slope(const std::function<double(double, double)>& term, doubl
         const double x = centre(rng), y = centre(rng);
         double sum = 0;
         for (int a = 0; a < q; ++a)
-            for (int b = 0; b < q; ++b)
-                sum += term(x + side * ((a + 0.5) / q - 0.5), y + side * ((b + 0.5) / q - 0.5));
+            for (int b = 0; b < q; ++b) sum += term(x + side * ((a + 0.5) / q - 0.5), y + side * ((b + 0.5) / q - 0.5));
         t[static_cast<std::size_t>(f)] = sum / (q * q);
         c[static_cast<std::size_t>(f)] = term(x, y);
     }
@@ -163,8 +162,8 @@ TEST_CASE("measured box correlation agrees with the closed form for gradient noi
     for (int j = 0; j < BoxCorrelation::grid_count; ++j) {
         const double k = std::exp2(BoxCorrelation::grid_log2(j));
         CAPTURE(k);
-        CHECK(std::fabs(measured->samples()[static_cast<std::size_t>(j)] - exact.samples()[static_cast<std::size_t>(j)]) <
-              4.0 / 96);
+        CHECK(std::fabs(measured->samples()[static_cast<std::size_t>(j)] -
+                        exact.samples()[static_cast<std::size_t>(j)]) < 4.0 / 96);
     }
 }
 

@@ -157,7 +157,8 @@ TEST_CASE("filtered mean leaves a residual uncorrelated with every octave it eva
                 for (int a = 0; a < q; ++a)
                     for (int b = 0; b < q; ++b) box += f(x + w * ((a + 0.5) / q - 0.5), y + w * ((b + 0.5) / q - 0.5));
                 residual[static_cast<std::size_t>(k)] = box / (q * q) - f.mean_over_footprint(x, y, w);
-                for (int i = 0; i < 3; ++i) term[static_cast<std::size_t>(i)][static_cast<std::size_t>(k)] = f.octave(i, x, y);
+                for (int i = 0; i < 3; ++i)
+                    term[static_cast<std::size_t>(i)][static_cast<std::size_t>(k)] = f.octave(i, x, y);
             }
             for (int i = 0; i < 3; ++i) {
                 if (f.resolved_fraction(i, w) == 0.0) continue;  // not evaluated
@@ -171,7 +172,8 @@ TEST_CASE("filtered mean leaves a residual uncorrelated with every octave it eva
                 tm /= n;
                 double srr = 0, stt = 0, srt = 0;
                 for (int k = 0; k < n; ++k) {
-                    const double dr = residual[static_cast<std::size_t>(k)] - rm, dt = t[static_cast<std::size_t>(k)] - tm;
+                    const double dr = residual[static_cast<std::size_t>(k)] - rm,
+                                 dt = t[static_cast<std::size_t>(k)] - tm;
                     srr += dr * dr;
                     stt += dt * dt;
                     srt += dr * dt;
@@ -208,7 +210,8 @@ TEST_CASE("filtered mean is continuous in the footprint width")
     }
 }
 
-TEST_CASE("resolved fraction is one at a point, the same function of w / p_i for every octave, and zero past the cutoff")
+TEST_CASE(
+    "resolved fraction is one at a point, the same function of w / p_i for every octave, and zero past the cutoff")
 {
     const FractalNoise f = make_fractal(FractalSum::Fbm, 3);
     const double cutoff = f.term_correlation().cutoff();
@@ -279,10 +282,10 @@ TEST_CASE("filtered noise looks the sigma table up at log2 of width over base pe
     REQUIRE(table);
     const FilteredNoise filtered(*f, *table);
     CHECK(filtered.lod(4.0) == 0.0);
-    CHECK(filtered.unresolved_sigma(4.0) == 0.5);      // LOD 0: node 3
-    CHECK(filtered.unresolved_sigma(1.0) == 0.2);      // LOD -2: node 1
+    CHECK(filtered.unresolved_sigma(4.0) == 0.5);                                       // LOD 0: node 3
+    CHECK(filtered.unresolved_sigma(1.0) == 0.2);                                       // LOD -2: node 1
     CHECK(std::fabs(filtered.unresolved_sigma(4.0 * std::sqrt(2.0)) - 0.525) < 1e-12);  // LOD 1/2
-    CHECK(filtered.unresolved_sigma(0.0) == 0.0);      // a point: LOD -inf, the first node
+    CHECK(filtered.unresolved_sigma(0.0) == 0.0);  // a point: LOD -inf, the first node
     CHECK(filtered.mean_over_footprint(1.5, 2.5, 0.25) == f->mean_over_footprint(1.5, 2.5, 0.25));
     // filter() gives both at once, from one log2 of the width.
     for (double w : {0.0, 0.01, 0.25, 4.0 * std::sqrt(2.0), 100.0}) {

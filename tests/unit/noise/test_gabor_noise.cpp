@@ -25,8 +25,8 @@ TEST_CASE("gabor noise variance matches the analytic formula within its Monte-Ca
     GaborNoiseOptions low_frequency;  // exp(-2 pi F0^2 / a^2) = 0.41: the second term matters
     low_frequency.frequency = 0.3;
     low_frequency.impulse_density = 3.0;
-    for (const Case& c : {Case{"isotropic", isotropic}, Case{"anisotropic", anisotropic},
-                          Case{"low frequency", low_frequency}}) {
+    for (const Case& c :
+         {Case{"isotropic", isotropic}, Case{"anisotropic", anisotropic}, Case{"low frequency", low_frequency}}) {
         CAPTURE(c.name);
         auto noise = GaborNoise::create(c.options, 17);
         REQUIRE(noise);

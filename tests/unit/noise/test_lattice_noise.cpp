@@ -31,9 +31,9 @@ double axis_weight(double t, int corner) { return corner ? fade(t) : 1 - fade(t)
 
 const std::vector<std::array<double, 3>>& edge_gradients()
 {
-    static const std::vector<std::array<double, 3>> g = {
-        {1, 1, 0}, {-1, 1, 0}, {1, -1, 0}, {-1, -1, 0}, {1, 0, 1}, {-1, 0, 1},
-        {1, 0, -1}, {-1, 0, -1}, {0, 1, 1}, {0, -1, 1}, {0, 1, -1}, {0, -1, -1}};
+    static const std::vector<std::array<double, 3>> g = {{1, 1, 0}, {-1, 1, 0}, {1, -1, 0}, {-1, -1, 0},
+                                                         {1, 0, 1}, {-1, 0, 1}, {1, 0, -1}, {-1, 0, -1},
+                                                         {0, 1, 1}, {0, -1, 1}, {0, 1, -1}, {0, -1, -1}};
     return g;
 }
 
@@ -112,7 +112,8 @@ TEST_CASE("gradient noise envelope maxima match the documented bounds")
                 for (int cy = 0; cy < 2; ++cy) {
                     double best = 0;
                     for (int k = 0; k < 8; ++k)
-                        best = std::max(best, std::fabs(std::cos(k * pi / 4) * (x - cx) + std::sin(k * pi / 4) * (y - cy)));
+                        best = std::max(best,
+                                        std::fabs(std::cos(k * pi / 4) * (x - cx) + std::sin(k * pi / 4) * (y - cy)));
                     e += axis_weight(x, cx) * axis_weight(y, cy) * best;
                 }
             max2 = std::max(max2, e);
@@ -155,7 +156,7 @@ TEST_CASE("gradient noise envelope maxima match the documented bounds")
         if (!improved) step /= 2;
     }
     CAPTURE(best);
-    CHECK(best > 1.03);  // the maximum lies off the centre...
+    CHECK(best > 1.03);                      // the maximum lies off the centre...
     CHECK(best <= GradientNoise::bound_3d);  // ...and under the documented bound
 }
 
@@ -260,13 +261,21 @@ TEST_CASE("lattice noise mean and variance match the ensemble formulas")
     };
     const Case cases[] = {
         {"gradient 2-D", pooled([&](std::uint64_t s) -> std::function<double()> {
-             return [&, g = GradientNoise(s)] { return g(coord(rng), coord(rng)); }; }), var_g2},
+             return [&, g = GradientNoise(s)] { return g(coord(rng), coord(rng)); };
+         }),
+         var_g2},
         {"gradient 3-D", pooled([&](std::uint64_t s) -> std::function<double()> {
-             return [&, g = GradientNoise(s)] { return g(coord(rng), coord(rng), coord(rng)); }; }), var_g3},
+             return [&, g = GradientNoise(s)] { return g(coord(rng), coord(rng), coord(rng)); };
+         }),
+         var_g3},
         {"value 2-D", pooled([&](std::uint64_t s) -> std::function<double()> {
-             return [&, v = ValueNoise(s)] { return v(coord(rng), coord(rng)); }; }), var_v2},
+             return [&, v = ValueNoise(s)] { return v(coord(rng), coord(rng)); };
+         }),
+         var_v2},
         {"value 3-D", pooled([&](std::uint64_t s) -> std::function<double()> {
-             return [&, v = ValueNoise(s)] { return v(coord(rng), coord(rng), coord(rng)); }; }), var_v3},
+             return [&, v = ValueNoise(s)] { return v(coord(rng), coord(rng), coord(rng)); };
+         }),
+         var_v3},
     };
     for (const Case& c : cases) {
         const std::string name = c.name;

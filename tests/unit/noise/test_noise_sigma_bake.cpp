@@ -121,8 +121,8 @@ namespace {
 // Independent brute force for the test below: its own generator
 // (std::mt19937_64, another seed), plain uniform (not stratified) box
 // samples and std::normal_distribution Gaussian offsets.
-SigmaEstimate brute_force_sigma(const FractalNoise& noise, FootprintShape shape, double w, int footprints,
-                                int samples, std::uint64_t seed)
+SigmaEstimate brute_force_sigma(const FractalNoise& noise, FootprintShape shape, double w, int footprints, int samples,
+                                std::uint64_t seed)
 {
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> centre(0.0, 256.0 * noise.base_period()), unit(-0.5, 0.5);
@@ -218,7 +218,8 @@ TEST_CASE("noise sigma table file round trip and CSV")
     auto bake = bake_noise_sigma(noise, o);
     REQUIRE(bake);
     const auto dir = std::filesystem::temp_directory_path();
-    const std::string exr = (dir / "cmfilter-test-sigma.exr").string(), csv = (dir / "cmfilter-test-sigma.csv").string();
+    const std::string exr = (dir / "cmfilter-test-sigma.exr").string(),
+                      csv = (dir / "cmfilter-test-sigma.csv").string();
     REQUIRE(write_noise_sigma_table(exr, *bake, "gradient:seed=1", 1.0));
     REQUIRE(write_noise_sigma_csv(csv, *bake, 1.0));
     for (FootprintShape shape : {FootprintShape::Box, FootprintShape::Gaussian}) {

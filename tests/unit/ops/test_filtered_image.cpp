@@ -33,7 +33,7 @@ const std::string kDir = temp_dir("cmfilter-test-filtered-image");
 
 // An 8-texel float (linear) map over [0, 1], clamp: the same texels as a
 // ReferenceMap (float values widened to double on both sides).
-const std::vector<float> kMap = {0.02f, 0.05f, 0.4f, 0.9f, 0.1f, 0.05f, 0.1f, 0.8f, 0.2f, 2.5f, 2.2f, 0.3f,
+const std::vector<float> kMap = {0.02f, 0.05f, 0.4f, 0.9f, 0.1f, 0.05f, 0.1f,  0.8f, 0.2f, 2.5f, 2.2f,  0.3f,
                                  0.0f,  0.0f,  0.0f, 0.6f, 0.6f, 0.6f,  0.05f, 0.9f, 0.3f, 1.0f, 0.95f, 0.9f};
 
 ReferenceMap reference_map()
@@ -82,8 +82,7 @@ FilteredImage apply(ApplyOptions options, FilterMethod method, double lod)
 
 // Brute force (tests/support/box_reference.h): the mean of C0(f) over
 // texel (x, y) of a w x h level, area-weighted.
-Rgb3 box_mean_color(const ReferenceMap& m, const std::vector<float>& f, int W, int H, int w, int h,
-                    int x, int y)
+Rgb3 box_mean_color(const ReferenceMap& m, const std::vector<float>& f, int W, int H, int w, int h, int x, int y)
 {
     Rgb3 sum{0, 0, 0};
     for (const auto& b : box_weights(W, H, w, h, x, y)) {
@@ -125,9 +124,8 @@ TEST_CASE("apply reference equals brute-force box means of C0(f), 13 x 7 driver"
         // Values up to 2.5 stored as float32 (2^-24 relative, 1.5e-7) after
         // double sums; 1e-6 absolute leaves room for the level's own float
         // storage and the bilinear weights at texel centres (1 ulp off 0 or 1).
-        CHECK(worst_error(img, [&](int x, int y) {
-                  return box_mean_color(m, f, W, H, img.width, img.height, x, y);
-              }) <= 1e-6);
+        CHECK(worst_error(img, [&](int x, int y) { return box_mean_color(m, f, W, H, img.width, img.height, x, y); }) <=
+              1e-6);
     }
 }
 
@@ -154,15 +152,15 @@ TEST_CASE("apply exact equals brute-force box means of C0(f) for a driver with f
         const FilteredImage img = apply(options, FilterMethod::Exact, k);
         // Fractions stored as float32 (2^-24 relative) times colours up to
         // 2.5, summed over 3 values: below 1e-6.
-        CHECK(worst_error(img, [&](int x, int y) {
-                  return box_mean_color(m, f, W, H, img.width, img.height, x, y);
-              }) <= 1e-6);
+        CHECK(worst_error(img, [&](int x, int y) { return box_mean_color(m, f, W, H, img.width, img.height, x, y); }) <=
+              1e-6);
     }
     const FilteredImage exact = apply(options, FilterMethod::Exact, 0.5);
     const FilteredImage reference = apply(options, FilterMethod::Reference, 0.5);
     REQUIRE(exact.rgb.size() == reference.rgb.size());
     double worst = 0;
-    for (std::size_t i = 0; i < exact.rgb.size(); ++i) worst = std::max(worst, double(std::abs(exact.rgb[i] - reference.rgb[i])));
+    for (std::size_t i = 0; i < exact.rgb.size(); ++i)
+        worst = std::max(worst, double(std::abs(exact.rgb[i] - reference.rgb[i])));
     CHECK(worst <= 1e-6);
 }
 
@@ -180,8 +178,7 @@ TEST_CASE("apply gaussian is T(mean, sigma) of eq. 10 and naive is C0(mean), on 
             const int bx = x / 2, by = y / 2;
             const int a = (bx * 3 + by) % 9, b = (bx + by * 5) % 9;
             const int c = ((x / 4) * 5 + (y / 4) * 2) % 9;
-            f[y * W + x] = x < 8 ? ((x + y) % 2 ? a : std::min(8, a + std::abs(a - b) % 5)) / 8.0f
-                                 : c / 8.0f;
+            f[y * W + x] = x < 8 ? ((x + y) % 2 ? a : std::min(8, a + std::abs(a - b) % 5)) / 8.0f : c / 8.0f;
         }
     // Value nodes every 0.0125 over [-0.75, 1.75] and sigma nodes every
     // 0.0125 up to 0.25: multiples of 1/16 (and sigma <= 0.25) are nodes, so

@@ -84,10 +84,10 @@ TEST_CASE("compare: RMSE over R, G, B of every pixel, overall and per channel")
     const std::string a = temp_dir() + "/rmse-a.exr", b = temp_dir() + "/rmse-b.exr";
     // 3 x 2 pixels; differences chosen so the sums are easy to check by hand,
     // with HDR and negative values, which RMSE must not clip.
-    const std::vector<float> pa = {0.0f, 0.5f, 1.0f,  2.0f, -1.0f, 0.25f,  0.5f, 0.5f, 0.5f,
-                                   4.0f, 0.0f, 0.0f,  0.0f,  0.0f, 0.0f,   1.0f, 1.0f, 1.0f};
-    const std::vector<float> pb = {0.5f, 0.5f, 1.0f,  2.0f,  1.0f, 0.25f,  0.5f, 0.5f, 0.0f,
-                                   1.0f, 0.0f, 0.0f,  0.0f,  0.0f, 0.0f,   1.0f, 1.0f, 1.0f};
+    const std::vector<float> pa = {0.0f, 0.5f, 1.0f, 2.0f, -1.0f, 0.25f, 0.5f, 0.5f, 0.5f,
+                                   4.0f, 0.0f, 0.0f, 0.0f, 0.0f,  0.0f,  1.0f, 1.0f, 1.0f};
+    const std::vector<float> pb = {0.5f, 0.5f, 1.0f, 2.0f, 1.0f, 0.25f, 0.5f, 0.5f, 0.0f,
+                                   1.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f,  1.0f, 1.0f, 1.0f};
     write_image(a, 3, 2, 3, OIIO::TypeDesc::FLOAT, pa.data());
     write_image(b, 3, 2, 3, OIIO::TypeDesc::FLOAT, pb.data());
     auto c = compare_images(paths(a, b), cmfilter_test::builtin_color_config());
@@ -299,7 +299,8 @@ TEST_CASE("compare: bad input is refused and leaves no heat map")
     REQUIRE(!nan);
     CHECK(nan.error().kind == ErrorKind::BadInput);
     // Two pixels hold non-finite values, the first at pixel 5 = (1, 1), green.
-    CHECK(nan.error().message.find("'" + nan_path + "' has 2 pixels with non-finite values "
+    CHECK(nan.error().message.find("'" + nan_path +
+                                   "' has 2 pixels with non-finite values "
                                    "(the first at (1, 1) channel 1: nan)") != std::string::npos);
 
     options.path_b = a;

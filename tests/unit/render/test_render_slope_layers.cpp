@@ -73,8 +73,9 @@ json combined_material()
     m["microsurface"] = microsurface();
     m["colormap"] = {{"image", kLuts + "sand-snow.png"}, {"domain", {-0.03, 0.03}}};
     m["slope_colormap"] = {{"image", kLuts + "slope-wheel.png"}, {"by", "vector"}, {"max_slope", 1.0}};
-    m["base"] = {{"colormap", {{"image", kLuts + "terrain.png"}, {"domain", {-0.7, 0.7}}}},
-                 {"driver", {{"noise", "fbm:base=gradient,octaves=6"}, {"sigma_table", kExamples + "fbm-gradient-6.exr"}}}};
+    m["base"] = {
+        {"colormap", {{"image", kLuts + "terrain.png"}, {"domain", {-0.7, 0.7}}}},
+        {"driver", {{"noise", "fbm:base=gradient,octaves=6"}, {"sigma_table", kExamples + "fbm-gradient-6.exr"}}}};
     m["combine"] = json::parse(R"({"mode": "sum", "weights": {"base": 0.3, "height": 0.3, "slope": 0.4}})");
     return m;
 }
@@ -226,9 +227,9 @@ TEST_CASE("a product with a constant base colour K renders as K times the slope 
     cmfilter_test::write_image(constant, 4, 1, 3, OIIO::TypeDesc::FLOAT, px);
 
     json product = steepness_material();
-    product["base"] = {{"colormap", {{"image", constant}, {"domain", {-1, 1}}}},
-                       {"driver", {{"noise", "fbm:base=gradient,octaves=6"},
-                                   {"sigma_table", kExamples + "fbm-gradient-6.exr"}}}};
+    product["base"] = {
+        {"colormap", {{"image", constant}, {"domain", {-1, 1}}}},
+        {"driver", {{"noise", "fbm:base=gradient,octaves=6"}, {"sigma_table", kExamples + "fbm-gradient-6.exr"}}}};
     product["combine"] = {{"mode", "product"}};
     const Prepared alone = prepare(plane_scene(steepness_material(), 12, 8), kExamples + "slope-render-test.json");
     const Prepared with_base = prepare(plane_scene(product, 12, 8), kExamples + "slope-render-test.json");
@@ -310,10 +311,10 @@ TEST_CASE("the exact render's mean colour of a slope-vector plane matches the re
         const std::vector<Rgb> texels = map.texels;
         for (int j = 0; j < map.height; ++j)
             for (int i = 0; i < map.width; ++i)
-                map.texels[static_cast<std::size_t>(j * map.width + i)] =
-                    texels[static_cast<std::size_t>(vertical ? (map.height - 1 - j) * map.width + i
-                                                             : j * map.width + (map.width - 1 - i))];
-        const double mirrored_de = ciede2000_linear_rgb(reference, mean_color(render_with(mirrored, RenderMethod::Gaussian)));
+                map.texels[static_cast<std::size_t>(j * map.width + i)] = texels[static_cast<std::size_t>(
+                    vertical ? (map.height - 1 - j) * map.width + i : j * map.width + (map.width - 1 - i))];
+        const double mirrored_de =
+            ciede2000_linear_rgb(reference, mean_color(render_with(mirrored, RenderMethod::Gaussian)));
         CHECK(mirrored_de > 10);
     }
 }

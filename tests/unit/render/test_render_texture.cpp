@@ -58,8 +58,8 @@ std::vector<float> smooth_driver(int w, int h)
     std::vector<float> f(static_cast<std::size_t>(w) * h);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x)
-            f[static_cast<std::size_t>(y) * w + x] =
-                static_cast<float>(0.5 + 0.1 * std::sin(kTwoPi * (x + 0.5) / w) + 0.1 * std::cos(kTwoPi * (y + 0.5) / h));
+            f[static_cast<std::size_t>(y) * w + x] = static_cast<float>(0.5 + 0.1 * std::sin(kTwoPi * (x + 0.5) / w) +
+                                                                        0.1 * std::cos(kTwoPi * (y + 0.5) / h));
     return f;
 }
 
@@ -67,8 +67,8 @@ std::vector<float> smooth_driver(int w, int h)
 // the driver image at `driver` (the renderer bakes its moments), seen from
 // `position` towards `look_at`, with the light straight above (no ambient):
 // lit pixels show the map's colour itself.
-Scene texture_scene(const std::string& driver, const Vec3& position, const Vec3& look_at, const Vec3& up,
-                    double repeat, int w, int h)
+Scene texture_scene(const std::string& driver, const Vec3& position, const Vec3& look_at, const Vec3& up, double repeat,
+                    int w, int h)
 {
     Scene scene;
     scene.path = "texture-scene";
@@ -426,7 +426,8 @@ TEST_CASE("exact on a driver with four values matches the reference within 0.5 m
     const int n = 512;
     const std::vector<float> f = quantised_driver(n, n);
     const double d = 1 / std::tan(kTwoPi / 24);  // fov 30 degrees: 2 units across
-    const Scene scene = texture_scene(write_driver("quantised.exr", n, n, f), {0, d, 0}, {0, 0, 0}, {0, 0, 1}, 1, 32, 32);
+    const Scene scene =
+        texture_scene(write_driver("quantised.exr", n, n, f), {0, d, 0}, {0, 0, 0}, {0, 0, 1}, 1, 32, 32);
     const std::vector<Material> materials = exact_materials_of(scene);
     REQUIRE(histograms_of(materials[0]));
     CHECK(histograms_of(materials[0])->bins() == 4);
@@ -476,8 +477,8 @@ TEST_CASE("exact on a driver with four values matches the reference within 0.5 m
 
 TEST_CASE("exact refuses a render without histograms, and a driver with too many values")
 {
-    const Scene scene = texture_scene(write_driver("quantised-small.exr", 16, 16, quantised_driver(16, 16)),
-                                      {0, 1, 0}, {0, 0, 0}, {0, 0, 1}, 1, 4, 4);
+    const Scene scene = texture_scene(write_driver("quantised-small.exr", 16, 16, quantised_driver(16, 16)), {0, 1, 0},
+                                      {0, 0, 0}, {0, 0, 1}, 1, 4, 4);
     RenderOptions options;
     options.method = RenderMethod::Exact;
     auto no_histograms = render(scene, materials_of(scene), options);
@@ -487,8 +488,8 @@ TEST_CASE("exact refuses a render without histograms, and a driver with too many
 
     std::vector<float> many(32 * 32);
     for (std::size_t i = 0; i < many.size(); ++i) many[i] = 0.2f + 0.6f * static_cast<float>(i) / 1024.0f;
-    const Scene too_many = texture_scene(write_driver("many-values.exr", 32, 32, many), {0, 1, 0}, {0, 0, 0},
-                                         {0, 0, 1}, 1, 4, 4);
+    const Scene too_many =
+        texture_scene(write_driver("many-values.exr", 32, 32, many), {0, 1, 0}, {0, 0, 0}, {0, 0, 1}, 1, 4, 4);
     auto config = ColorConfig::load("");
     REQUIRE(config);
     MaterialOptions material_options;
@@ -605,7 +606,8 @@ TEST_CASE("exact follows an anisotropic footprint: the box mean of C0 over a foo
                 REQUIRE(hit);
                 Rgb want;
                 for_footprint_texels(hit->hit.u, hit->hit.v, [&](long tx, long ty) {
-                    want += (1.0 / 256) * materials[0].color.map.evaluate(f[static_cast<std::size_t>(ty * kStripN + tx)]);
+                    want += (1.0 / 256) *
+                            materials[0].color.map.evaluate(f[static_cast<std::size_t>(ty * kStripN + tx)]);
                 });
                 const std::size_t p = static_cast<std::size_t>(y) * kStripPixels + static_cast<std::size_t>(x);
                 w = std::max({w, std::abs(exact->rgb[3 * p] - want.r), std::abs(exact->rgb[3 * p + 1] - want.g),
@@ -613,7 +615,7 @@ TEST_CASE("exact follows an anisotropic footprint: the box mean of C0 over a foo
             }
     }
     MESSAGE("exact vs the box mean of C0 over the texels: largest difference " << worst[0] << " with probes, "
-                                                                                << worst[1] << " with one");
+                                                                               << worst[1] << " with one");
     CHECK(worst[0] < 1e-4);
     CHECK(worst[1] > 1e-2);
 }

@@ -71,9 +71,7 @@ TEST_CASE("edge and corner rays make the angles of the field of view")
         const double vertical = sc.fov_degrees * kPi / 360;
         const double horizontal = std::atan(aspect * tan_half);
         const double diagonal = std::atan(tan_half * std::sqrt(1 + aspect * aspect));
-        const auto angle_at = [&](double px, double py) {
-            return angle_between(camera.ray(px, py).direction, view);
-        };
+        const auto angle_at = [&](double px, double py) { return angle_between(camera.ray(px, py).direction, view); };
         CHECK(angle_at(W / 2, 0) == doctest::Approx(vertical).epsilon(1e-12));
         CHECK(angle_at(W / 2, H) == doctest::Approx(vertical).epsilon(1e-12));
         CHECK(angle_at(0, H / 2) == doctest::Approx(horizontal).epsilon(1e-12));

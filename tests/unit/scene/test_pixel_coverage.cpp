@@ -92,12 +92,12 @@ std::map<int, double> sampled_shares(const Scene& scene, const Camera& camera, i
 }
 
 struct CoverageCheck {
-    int mixed = 0;           // pixels the coarse grid finds mixed
-    int edges = 0;           // pixels on_edge names
-    int missed = 0;          // mixed but not on_edge
-    double max_error = 0;    // largest share difference over the edge pixels
+    int mixed = 0;         // pixels the coarse grid finds mixed
+    int edges = 0;         // pixels on_edge names
+    int missed = 0;        // mixed but not on_edge
+    double max_error = 0;  // largest share difference over the edge pixels
     double mean_error = 0;
-    int misplaced = 0;       // representative points that see another surface
+    int misplaced = 0;  // representative points that see another surface
 };
 
 // Every pixel: coarse samples for mixed pixels; on the edge pixels, the
@@ -178,8 +178,8 @@ void check_accurate(const CoverageCheck& c)
 TEST_CASE("pixel coverage: a sphere's silhouette against dense sampling of each pixel")
 {
     // Off-axis, so the silhouette is an ellipse; about 20 pixels across.
-    const Scene s = scene_with(make_scene_camera({0, 0, 0}, {0, 0, 1}, {0, 1, 0}, 30, 48, 40),
-                               {sphere({1.2, -0.5, 10}, 1.3)});
+    const Scene s =
+        scene_with(make_scene_camera({0, 0, 0}, {0, 0, 1}, {0, 1, 0}, 30, 48, 40), {sphere({1.2, -0.5, 10}, 1.3)});
     const CoverageCheck c = check_coverage(s, 16, 256);
     check_accurate(c);
     CHECK(c.mixed > 40);
@@ -215,8 +215,7 @@ TEST_CASE("pixel coverage: a sphere sunk into a plane, where the surfaces meet")
 
 TEST_CASE("pixel coverage: a pixel wholly on one surface has the whole box as its footprint")
 {
-    const Scene s = scene_with(make_scene_camera({0, 0, 0}, {0, 0, 1}, {0, 1, 0}, 30, 48, 40),
-                               {sphere({0, 0, 10}, 2)});
+    const Scene s = scene_with(make_scene_camera({0, 0, 0}, {0, 0, 1}, {0, 1, 0}, 30, 48, 40), {sphere({0, 0, 10}, 2)});
     auto camera = Camera::create(s.camera);
     REQUIRE(camera);
     const PixelCoverage coverage(s, *camera);
@@ -239,7 +238,8 @@ TEST_CASE("pixel coverage: a pixel wholly on one surface has the whole box as it
     CHECK(h->dv_dy == doctest::Approx(centre->dv_dy).epsilon(1e-6));
 }
 
-TEST_CASE("render: with edge coverage the far sphere's silhouette pixels match a supersampled render as the interior does")
+TEST_CASE(
+    "render: with edge coverage the far sphere's silhouette pixels match a supersampled render as the interior does")
 {
     // examples/scenes/sphere-fbm-far.json at 64 x 64 with the field of view
     // narrowed to keep the sphere 34 pixels across, as at 480 x 480, and its

@@ -414,8 +414,7 @@ TEST_CASE("a camera up vector parallel to the view direction is an error")
     json text = minimal_scene();
     text["camera"]["up"] = {0, 0, -2};
     const std::string message = folder.after_scene_path(folder.error_of(text));
-    CHECK(message.rfind("/camera/up: expected a vector not parallel to the view direction look_at - position", 0) ==
-          0);
+    CHECK(message.rfind("/camera/up: expected a vector not parallel to the view direction look_at - position", 0) == 0);
     CHECK(contains(message, "got [0.0,0.0,-2.0]"));
 }
 
@@ -682,8 +681,7 @@ TEST_CASE("a referenced file that does not exist is an error with its resolved p
     SceneFolder folder;
     json text = example_scene();
     text["surfaces"][0]["material"]["driver"]["sigma_table"] = "missing-sigma.exr";
-    CHECK(folder.error_of(text) == folder.scene_path() +
-                                       ": /surfaces/0/material/driver/sigma_table: file not found: " +
+    CHECK(folder.error_of(text) == folder.scene_path() + ": /surfaces/0/material/driver/sigma_table: file not found: " +
                                        folder.resolved("missing-sigma.exr"));
 }
 

@@ -222,8 +222,7 @@ TEST_CASE("max_wavelength below min_wavelength is an error naming both")
 
 TEST_CASE("a cosine count of 0, above the limit or not an integer is an error naming the range")
 {
-    check_each_refused("cosines", {json(0), json(4097), json(-3), json(2.5), json("64")},
-                       "an integer from 1 to 4096");
+    check_each_refused("cosines", {json(0), json(4097), json(-3), json(2.5), json("64")}, "an integer from 1 to 4096");
 }
 
 TEST_CASE("a seed that is not a non-negative integer is an error")
@@ -244,7 +243,8 @@ TEST_CASE("an unknown key in a microsurface is an error listing the known ones")
     json scene = microsurface_scene();
     micro(scene)["sigma"] = 0.1;
     CHECK(error_of(scene) ==
-          kMicro + "/sigma: unknown key (expected one of sigma_h, min_wavelength, max_wavelength, cosines, seed, tile)");
+          kMicro +
+              "/sigma: unknown key (expected one of sigma_h, min_wavelength, max_wavelength, cosines, seed, tile)");
 }
 
 TEST_CASE("a microsurface that is not an object is an error")
@@ -258,10 +258,13 @@ TEST_CASE("a material with both a driver and a microsurface, or neither, is an e
 {
     json scene = microsurface_scene();
     scene["surfaces"][0]["material"]["driver"] = {{"noise", "gradient"}};
-    CHECK(error_of(scene) == "/surfaces/0/material: expected exactly one of driver, microsurface or displacement, got driver and microsurface");
+    CHECK(
+        error_of(scene) ==
+        "/surfaces/0/material: expected exactly one of driver, microsurface or displacement, got driver and microsurface");
     scene["surfaces"][0]["material"].erase("driver");
     scene["surfaces"][0]["material"].erase("microsurface");
-    CHECK(error_of(scene) == "/surfaces/0/material: expected exactly one of driver, microsurface or displacement, got none");
+    CHECK(error_of(scene) ==
+          "/surfaces/0/material: expected exactly one of driver, microsurface or displacement, got none");
 }
 
 TEST_CASE("a microsurface on a sphere is an error")
@@ -278,7 +281,8 @@ TEST_CASE("a microsurface on a sphere is an error")
           kMicro + ": a microsurface needs a plane (it displaces the plane along its normal), not a sphere");
 }
 
-TEST_CASE("a microsurface mapping whose axes are not perpendicular, not of equal length or not in the plane is an error")
+TEST_CASE(
+    "a microsurface mapping whose axes are not perpendicular, not of equal length or not in the plane is an error")
 {
     const std::string expected =
         "/surfaces/0/mapping: a microsurface needs a planar mapping whose u_axis and v_axis are perpendicular, of "
@@ -289,7 +293,10 @@ TEST_CASE("a microsurface mapping whose axes are not perpendicular, not of equal
         const char* got;
     };
     const Bad bad[] = {
-        {"not perpendicular", {1, 0, 0.3}, {0, 0, 1}, "got u_axis [1.0,0.0,0.3] and v_axis [0.0,0.0,1.0] on a plane of normal [0.0,1.0,0.0]"},
+        {"not perpendicular",
+         {1, 0, 0.3},
+         {0, 0, 1},
+         "got u_axis [1.0,0.0,0.3] and v_axis [0.0,0.0,1.0] on a plane of normal [0.0,1.0,0.0]"},
         {"not of equal length", {2, 0, 0}, {0, 0, 1}, "got u_axis [2.0,0.0,0.0] and v_axis [0.0,0.0,1.0]"},
         {"not in the plane", {1, 0, 0}, {0, 0.6, 0.8}, "got u_axis [1.0,0.0,0.0] and v_axis [0.0,0.6,0.8]"},
     };

@@ -66,7 +66,8 @@ json three_layer_scene()
     json scene = slope_scene();
     material(scene)["colormap"] = height_colormap();
     material(scene)["base"] = base_layer();
-    material(scene)["combine"] = json::parse(R"({"mode": "sum", "weights": {"base": 0.25, "height": 0.5, "slope": 1.5}})");
+    material(scene)["combine"] =
+        json::parse(R"({"mode": "sum", "weights": {"base": 0.25, "height": 0.5, "slope": 1.5}})");
     return scene;
 }
 
@@ -128,8 +129,8 @@ TEST_CASE("a steepness slope map's domain, wrap and colour space are read exactl
 TEST_CASE("a slope-vector map is read with its max_slope and colour space")
 {
     json scene = slope_scene();
-    material(scene)["slope_colormap"] =
-        json::parse(R"({"image": "../../luts/slope-wheel.png", "by": "vector", "max_slope": 1.75, "colorspace": "sRGB"})");
+    material(scene)["slope_colormap"] = json::parse(
+        R"({"image": "../../luts/slope-wheel.png", "by": "vector", "max_slope": 1.75, "colorspace": "sRGB"})");
     const auto loaded = parse(scene);
     const SlopeColorMapSource& s = *loaded_material(loaded).slope_colormap;
     CHECK(s.kind == SlopeMapKind::Vector);
@@ -153,8 +154,7 @@ TEST_CASE("a three-layer material reads its base layer and the weights of its su
     CHECK(m.base->colormap.domain_max == 0.7);
     CHECK(m.base->driver.kind == DriverKind::Noise);
     CHECK(m.base->driver.noise_spec == "fbm:base=gradient,octaves=6");
-    CHECK(m.base->driver.sigma_table_path ==
-          std::string(CMFILTER_SOURCE_DIR) + "/examples/scenes/fbm-gradient-6.exr");
+    CHECK(m.base->driver.sigma_table_path == std::string(CMFILTER_SOURCE_DIR) + "/examples/scenes/fbm-gradient-6.exr");
     CHECK(m.combine.mode == CombineMode::Sum);
     CHECK(m.combine.base == 0.25);
     CHECK(m.combine.height == 0.5);
@@ -347,9 +347,9 @@ TEST_CASE("a microsurface with no layer at all is an error naming the material a
 {
     json scene = slope_scene();
     material(scene).erase("slope_colormap");
-    CHECK(error_of(scene) == kMaterial +
-                                 ": a microsurface or displacement material needs at least one of colormap (over heights), "
-                                 "slope_colormap and base");
+    CHECK(error_of(scene) ==
+          kMaterial + ": a microsurface or displacement material needs at least one of colormap (over heights), "
+                      "slope_colormap and base");
     // combine alone is no layer either.
     material(scene)["combine"] = json::parse(R"({"mode": "product"})");
     CHECK(starts_with(error_of(scene), kMaterial + ": a microsurface or displacement material needs at least one of"));
@@ -360,7 +360,8 @@ TEST_CASE("a tolerance inside the base layer's colour map is an error naming it,
     json scene = three_layer_scene();
     material(scene)["base"]["colormap"]["tolerance"] = 1;
     const std::string error = error_of(scene);
-    CHECK(starts_with(error, kMaterial + "/base/colormap/tolerance: a base layer's colour map takes the default table"));
+    CHECK(
+        starts_with(error, kMaterial + "/base/colormap/tolerance: a base layer's colour map takes the default table"));
 
     scene = three_layer_scene();
     material(scene)["base"].erase("driver");

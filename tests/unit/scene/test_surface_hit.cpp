@@ -350,8 +350,7 @@ TEST_CASE("a plane's spherical mapping uses the direction from the mapping origi
     TextureMapping mapping = spherical_mapping(1, 1);
     mapping.origin = {0, 0, 0};
     const Surface plane = make_plane({0, -1, 0}, {0, 1, 0}, mapping);
-    const std::optional<SurfaceHit> hit =
-        intersect(plane, make_ray({1, 1, 0}, {0, -1, 0}, {1e-3, 0, 0}, {0, 0, 1e-3}));
+    const std::optional<SurfaceHit> hit = intersect(plane, make_ray({1, 1, 0}, {0, -1, 0}, {1e-3, 0, 0}, {0, 0, 1e-3}));
     REQUIRE(hit);
     CHECK(hit->u == doctest::Approx(0.0));
     CHECK(hit->v == doctest::Approx(0.75).epsilon(1e-14));  // theta = 3 pi / 4

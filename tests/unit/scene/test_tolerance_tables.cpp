@@ -124,7 +124,7 @@ TEST_CASE("the scene's colormap tolerance fits as the option does; the option 0 
     CHECK(from_scene[0].plain.cells() == from_option[0].plain.cells());
 
     scene->surfaces[0].material.colormap.tolerance = 1.0;
-    option.tolerance = 0.0;  // overrides the scene's: the fixed table
+    option.tolerance = 0.0;    // overrides the scene's: the fixed table
     option.plain_bound = 0.2;  // with the shortcut asked for explicitly
     const std::vector<ColorLayer> overridden = table_layers_for(*scene, option);
     CHECK(overridden[0].table.axes().values == defaults.values);

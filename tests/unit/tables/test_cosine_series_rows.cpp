@@ -26,8 +26,7 @@ MapPair random_clamp_map(std::mt19937_64& rng, int n, double vmin, double vmax, 
 }
 
 // Largest |row - quadrature| over every node of one row.
-double row_error(const MapPair& p, const CosineSeriesRows& series, double first, double step,
-                 int count, double sigma)
+double row_error(const MapPair& p, const CosineSeriesRows& series, double first, double step, int count, double sigma)
 {
     std::vector<float> row(3 * count), other(3 * count);
     series.evaluate(sigma, row.data(), sigma, other.data());
@@ -60,7 +59,7 @@ TEST_CASE("cosine-series rows match quadrature wherever their bound is below 1e-
         {256, 0.0, 1.0, 0.75, 0.25, 97, true},    // hard edges, an odd node count
         {7, -3.0, 5.0, 0.0, 2.0, 40, false},      // few texels, no margin, offset domain
         {64, 1000.0, 1000.5, 0.1, 0.01, 300, true},
-        {1, 0.0, 1.0, 0.75, 0.25, 16, false},     // a constant map has no kinks
+        {1, 0.0, 1.0, 0.75, 0.25, 16, false},  // a constant map has no kinks
     };
     for (const Case& c : cases) {
         const MapPair p = random_clamp_map(rng, c.n, c.vmin, c.vmax, c.hard_edges);

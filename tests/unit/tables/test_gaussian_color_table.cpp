@@ -79,7 +79,7 @@ TEST_CASE("table axes follow the documented geometry")
     CHECK(ax.value_last() == doctest::Approx(6.0));
     CHECK(ax.value_at(4) == doctest::Approx(1.0));
     CHECK(ax.sigma_at(0) == 0.0);
-    CHECK(ax.sigma_at(2) == doctest::Approx(0.25));    // sqrt spacing (default): (2/4)^2
+    CHECK(ax.sigma_at(2) == doctest::Approx(0.25));  // sqrt spacing (default): (2/4)^2
     CHECK(ax.sigma_at(4) == 1.0);
 
     p.map.wrap = WrapMode::Repeat;

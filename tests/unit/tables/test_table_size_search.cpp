@@ -37,9 +37,8 @@ MapPair ramp_and_edge(int n, WrapMode wrap)
     p.ref.wrap = to_string(wrap);
     for (int i = 0; i < n; ++i) {
         const double t = static_cast<double>(i) / (n - 1);
-        const cmfilter_test::Rgb3 c =
-            i < n / 2 ? cmfilter_test::Rgb3{0.02, 0.05 + 0.6 * t, 0.3 - 0.2 * t}
-                      : cmfilter_test::Rgb3{0.9, 0.3 + 0.5 * t, 0.05 + 0.4 * t};
+        const cmfilter_test::Rgb3 c = i < n / 2 ? cmfilter_test::Rgb3{0.02, 0.05 + 0.6 * t, 0.3 - 0.2 * t}
+                                                : cmfilter_test::Rgb3{0.9, 0.3 + 0.5 * t, 0.05 + 0.4 * t};
         p.map.texels.push_back({c[0], c[1], c[2]});
         p.ref.texels.push_back(c);
     }
@@ -107,7 +106,7 @@ TEST_CASE("nearest_rank_quantile: rank ceil(q n), p95 as summarize_errors, 1 is 
 {
     std::vector<double> x(20000);
     for (std::size_t i = 0; i < x.size(); ++i) x[i] = static_cast<double>((i * 7919) % x.size());  // 0..19999 shuffled
-    CHECK(nearest_rank_quantile(x, 0.999) == 19979.0);  // rank 19980
+    CHECK(nearest_rank_quantile(x, 0.999) == 19979.0);                                             // rank 19980
     CHECK(nearest_rank_quantile(x, 1.0) == 19999.0);
     CHECK(nearest_rank_quantile(x, 0.95) == summarize_errors(x).p95);
     CHECK(nearest_rank_quantile({}, 0.5) == 0.0);

@@ -44,8 +44,7 @@ std::vector<float> random_driver(int w, int h, double lo, double hi, std::uint64
     return v;
 }
 
-void write_image(const std::string& path, int w, int h, int channels, OIIO::TypeDesc type,
-                 const void* data)
+void write_image(const std::string& path, int w, int h, int channels, OIIO::TypeDesc type, const void* data)
 {
     auto out = OIIO::ImageOutput::create(path);
     REQUIRE(out);
@@ -87,8 +86,7 @@ MomentBakeResult bake(const std::string& driver, const std::string& output)
 
 // Brute force (tests/support/box_reference.h): the box mean of
 // g = (f - c)^power over texel (x, y) of a w x h level, summed in double.
-double box_mean(const std::vector<float>& f, int W, int H, int w, int h, int x, int y, double c,
-                int power)
+double box_mean(const std::vector<float>& f, int W, int H, int w, int h, int x, int y, double c, int power)
 {
     double sum = 0;
     for (const auto& b : cmfilter_test::box_weights(W, H, w, h, x, y)) {
@@ -111,8 +109,10 @@ TEST_CASE("moment pyramid levels are exact box means of level 0, any size")
         CAPTURE(W);
         CAPTURE(H);
         const auto f = random_driver(W, H, -2.0, 3.0, 7 + W * 100 + H);
-        const std::string driver = (test_dir() / ("box-" + std::to_string(W) + "x" + std::to_string(H) + ".exr")).string();
-        const std::string output = (test_dir() / ("box-moments-" + std::to_string(W) + "x" + std::to_string(H) + ".exr")).string();
+        const std::string driver =
+            (test_dir() / ("box-" + std::to_string(W) + "x" + std::to_string(H) + ".exr")).string();
+        const std::string output =
+            (test_dir() / ("box-moments-" + std::to_string(W) + "x" + std::to_string(H) + ".exr")).string();
         write_image(driver, W, H, 1, OIIO::TypeDesc::FLOAT, f.data());
         const MomentBakeResult r = bake(driver, output);
         double mean = 0;
@@ -183,8 +183,8 @@ TEST_CASE("moment pyramid matches maketx --filter box on a power-of-two driver")
     const std::string pair_path = (test_dir() / "pow2-pair.exr").string();
     const std::string made = (test_dir() / "pow2-maketx.exr").string();
     write_image(pair_path, W, H, 2, OIIO::TypeDesc::FLOAT, pair.data());
-    const std::string command = "'" + maketx + "' --filter box -d float --tile 64 64 --compression zip '" +
-                                pair_path + "' -o '" + made + "' > /dev/null 2>&1";
+    const std::string command = "'" + maketx + "' --filter box -d float --tile 64 64 --compression zip '" + pair_path +
+                                "' -o '" + made + "' > /dev/null 2>&1";
     REQUIRE(std::system(command.c_str()) == 0);
     const auto ours = read_levels(output);
     const auto theirs = read_levels(made);
@@ -265,8 +265,7 @@ TEST_CASE("TextureSystem lookups at integer LOD and texel centres reproduce the 
         // every level of a square texture, and for others the levels up to
         // the first whose smaller side is 1 texel.
         int reachable = 1;
-        while (reachable < int(levels.size()) &&
-               std::min(levels[reachable - 1].w, levels[reachable - 1].h) > 1)
+        while (reachable < int(levels.size()) && std::min(levels[reachable - 1].w, levels[reachable - 1].h) > 1)
             ++reachable;
         CHECK(tex->reachable_levels() == reachable);
         if (W == H) CHECK(reachable == int(levels.size()));

@@ -44,8 +44,7 @@ TEST_CASE("sha256: FIPS 180-4 example digests")
     CHECK(sha256_of("abc") == "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
     CHECK(sha256_of("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq") ==
           "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
-    CHECK(sha256_of(std::string(1000000, 'a')) ==
-          "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
+    CHECK(sha256_of(std::string(1000000, 'a')) == "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
 }
 
 TEST_CASE("sha256: the SHA-instruction and portable block computations agree")
@@ -57,8 +56,7 @@ TEST_CASE("sha256: the SHA-instruction and portable block computations agree")
     MESSAGE("block computation in use: " << std::string(detail::sha256_implementation()));
     std::string bytes(4099, '\0');
     for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<char>((i * 7919 + (i >> 5)) & 0xff);
-    CHECK(detail::sha256_hex_portable("abc", 3) ==
-          "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+    CHECK(detail::sha256_hex_portable("abc", 3) == "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
     for (std::size_t n : {0u, 1u, 55u, 56u, 63u, 64u, 65u, 127u, 128u, 129u, 1000u, 4099u}) {
         INFO("length " << n);
         CHECK(sha256_hex(bytes.data(), n) == detail::sha256_hex_portable(bytes.data(), n));
@@ -100,8 +98,7 @@ TEST_CASE("sha256: file digests match the one-shot digest and the system sha256s
 
 TEST_CASE("sha256: file digest of a missing file is an Io error naming it")
 {
-    const std::string path =
-        (fs::temp_directory_path() / "cmfilter-test-sha256-no-such-file.bin").string();
+    const std::string path = (fs::temp_directory_path() / "cmfilter-test-sha256-no-such-file.bin").string();
     fs::remove(path);
     const auto digest = sha256_file_hex(path);
     REQUIRE_FALSE(digest.has_value());
