@@ -337,6 +337,23 @@ Status load_microsurface_colors(const Scene& scene, std::size_t i, const ColorCo
     return ok();
 }
 
+// A microsurface material (Driver: MicrosurfaceDriver or DisplacementDriver)
+// over `surface`: C_h (`heights`), its slope map, base layer and combination,
+// and height_scale from the mapping (scene units per texture unit).
+template <class Driver, class Shape>
+Expected<Material> layered_material(const Scene& scene, std::size_t i, const ColorConfig& config,
+                                    const MaterialOptions& options, MaterialProvenance provenance,
+                                    std::optional<ColorLayer> heights, Shape surface)
+{
+    MicrosurfaceColors colors;
+    colors.height = std::move(heights);
+    std::shared_ptr<const Material> base;
+    if (auto st = load_microsurface_colors(scene, i, config, options, colors, base, provenance); !st) return st.error();
+    return Material{
+        std::move(provenance), ColorLayer{},
+        Driver{std::move(surface), 1.0 / length(scene.surfaces[i].mapping.u_axis), std::move(colors), std::move(base)}};
+}
+
 // A Gaussian microsurface (sec. 5), a clamp height map's domain checked
 // against its heights' +- 3 sigma_h, and its colours.
 Expected<Material> load_microsurface_material(const Scene& scene, std::size_t i, const ColorConfig& config,
@@ -352,13 +369,8 @@ Expected<Material> load_microsurface_material(const Scene& scene, std::size_t i,
                                    "the microsurface's heights, +- 3 sigma_h");
             !st)
             return st.error();
-    MicrosurfaceColors colors;
-    colors.height = std::move(heights);
-    std::shared_ptr<const Material> base;
-    if (auto st = load_microsurface_colors(scene, i, config, options, colors, base, provenance); !st) return st.error();
-    return Material{std::move(provenance), ColorLayer{},
-                    MicrosurfaceDriver{std::move(*micro), 1.0 / length(surface.mapping.u_axis), std::move(colors),
-                                       std::move(base)}};
+    return layered_material<MicrosurfaceDriver>(scene, i, config, options, std::move(provenance), std::move(heights),
+                                                std::move(*micro));
 }
 
 // A textured displacement, a clamp height map's domain checked against its
@@ -389,13 +401,8 @@ Expected<Material> load_displacement_material(const Scene& scene, std::size_t i,
             !st)
             return st.error();
     }
-    MicrosurfaceColors colors;
-    colors.height = std::move(heights);
-    std::shared_ptr<const Material> base;
-    if (auto st = load_microsurface_colors(scene, i, config, options, colors, base, provenance); !st) return st.error();
-    return Material{std::move(provenance), ColorLayer{},
-                    DisplacementDriver{std::move(*texture), 1.0 / length(surface.mapping.u_axis), std::move(colors),
-                                       std::move(base)}};
+    return layered_material<DisplacementDriver>(scene, i, config, options, std::move(provenance), std::move(heights),
+                                                std::move(*texture));
 }
 
 Status refuse_noise_for_exact(const Scene& scene, std::size_t i)
