@@ -51,6 +51,10 @@ Command setup_noise_image(CLI::App& parent);
 Command setup_bake_noise(CLI::App& parent);
 Command setup_render(CLI::App& parent);
 Command setup_bench(CLI::App& parent);
+Command setup_make_stack(CLI::App& parent);
+Command setup_fit(CLI::App& parent);
+Command setup_relight(CLI::App& parent);
+Command setup_normals(CLI::App& parent);
 
 // Splits "a:b" into two numbers; names the option and the text on failure.
 Expected<std::pair<double, double>> parse_range(const std::string& option, const std::string& text);

@@ -22,7 +22,9 @@ int main(int argc, char** argv)
     std::vector<cli::Command> commands = {
         cli::setup_bake_colormap(app), cli::setup_bake_moments(app), cli::setup_apply(app),
         cli::setup_compare(app),       cli::setup_info(app),         cli::setup_noise_image(app),
-        cli::setup_bake_noise(app),    cli::setup_render(app),       cli::setup_bench(app)};
+        cli::setup_bake_noise(app),    cli::setup_render(app),       cli::setup_bench(app),
+        cli::setup_make_stack(app),    cli::setup_fit(app),          cli::setup_relight(app),
+        cli::setup_normals(app)};
 
     auto prefix = [&]() {
         std::string p = "cmfilter";
