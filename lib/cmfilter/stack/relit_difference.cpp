@@ -28,19 +28,25 @@ std::vector<Vec3> hemisphere_directions(int count)
 
 namespace {
 
-// The fit's value at one texel, channel and light, given the basis there.
-double relit_value(const LinearFit& fit, const float* texel, int channel,
-                   const std::array<double, kMaxLinearTerms>& basis)
+// |a(l) - b(l)| at one texel and channel, given the basis at l. For the
+// models linear in their coefficients, the difference of the coefficients
+// weighted by the basis; PtmLrgb the difference of the products.
+double relit_difference(const LinearFit& fit, const float* a, const float* b, int channel,
+                        const std::array<double, kMaxLinearTerms>& basis)
 {
     const int terms = fit.terms();
-    double v = 0;
     if (fit.model == LinearModel::PtmLrgb) {
-        for (int k = 0; k < terms; ++k) v += texel[k] * basis[k];
-        return v * texel[terms + channel];
+        double pa = 0, pb = 0;
+        for (int k = 0; k < terms; ++k) {
+            pa += a[k] * basis[k];
+            pb += b[k] * basis[k];
+        }
+        return std::abs(pa * a[terms + channel] - pb * b[terms + channel]);
     }
-    const float* c = texel + static_cast<std::size_t>(channel) * terms;
-    for (int k = 0; k < terms; ++k) v += c[k] * basis[k];
-    return v;
+    const std::size_t offset = static_cast<std::size_t>(channel) * terms;
+    double d = 0;
+    for (int k = 0; k < terms; ++k) d += (double(a[offset + k]) - double(b[offset + k])) * basis[k];
+    return std::abs(d);
 }
 
 }  // namespace
@@ -59,8 +65,7 @@ double max_relit_difference(const LinearFit& a, const LinearFit& b, const std::v
             const float* ta = a.texel(t);
             const float* tb = b.texel(t);
             for (const auto& basis : bases)
-                for (int c = 0; c < a.channels; ++c)
-                    m = std::max(m, std::abs(relit_value(a, ta, c, basis) - relit_value(b, tb, c, basis)));
+                for (int c = 0; c < a.channels; ++c) m = std::max(m, relit_difference(a, ta, tb, c, basis));
         }
         row_max[static_cast<std::size_t>(y)] = m;
     });
