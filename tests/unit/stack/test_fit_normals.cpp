@@ -212,16 +212,21 @@ TEST_CASE("fit normals: an RGB fit uses the Rec. 709 luminance of its channels")
 
 TEST_CASE("fit normals: an HSH fit's normal is the maximum over the hemisphere")
 {
+    // Six texels of random HSH 3 coefficients and a flat one (h0 alone).
     std::mt19937_64 rng(6);
     std::uniform_real_distribution<float> coefficient(-1, 1);
     LinearFit fit;
     fit.model = LinearModel::Hsh3;
-    fit.width = 3;
+    fit.width = 7;
     fit.height = 1;
     fit.channels = 1;
-    for (int i = 0; i < 27; ++i) fit.coefficients.push_back(coefficient(rng));
-    const FitNormals n = fit_normals(fit, 1);
-    for (std::size_t t = 0; t < 3; ++t) {
+    for (int i = 0; i < 6 * 9; ++i) fit.coefficients.push_back(coefficient(rng));
+    fit.coefficients.push_back(0.5f);
+    for (int k = 1; k < 9; ++k) fit.coefficients.push_back(0.0f);
+    const FitNormals n = fit_normals(fit, 2);
+    std::size_t on_horizon = 0;
+    for (std::size_t t = 0; t < 6; ++t) {
+        CAPTURE(t);
         const auto value = [&](const Vec3& l) {
             const auto b = evaluate_basis(LinearModel::Hsh3, l);
             double v = 0;
@@ -229,8 +234,11 @@ TEST_CASE("fit normals: an HSH fit's normal is the maximum over the hemisphere")
             return v;
         };
         const Vec3 best = brute_force_maximum(value);
+        if (best.z < 1e-12) ++on_horizon;
         const Vec3 got = normal_of(n, t);
         CHECK(value(got) >= value(best) - 1e-6);
         CHECK(angle_deg(got, best) < 0.5);
     }
+    CHECK(normal_of(n, 6).z == 1.0);
+    CHECK(n.degenerate == on_horizon + 1);
 }
