@@ -105,7 +105,10 @@ TEST_CASE("linear fit: coefficients match a per-texel QR least-squares solve")
 {
     std::mt19937_64 rng(17);
     const auto lights = random_lights(rng, 24);
-    const ImageStack stack = random_stack(rng, 7, 5, 3, lights);
+    ImageStack stack = random_stack(rng, 7, 5, 3, lights);
+    stack.encoding = StackEncoding::DisplayEncoded;
+    const auto conditioning = check_light_set(lights, LinearModel::PtmRgb);
+    REQUIRE(conditioning);
     for (LinearModel model : {LinearModel::PtmRgb, LinearModel::Hsh2, LinearModel::Hsh3, LinearModel::PtmLrgb}) {
         const std::string model_name = to_string(model);
         CAPTURE(model_name);
@@ -118,6 +121,10 @@ TEST_CASE("linear fit: coefficients match a per-texel QR least-squares solve")
         CHECK(fit->height == 5);
         CHECK(fit->channels == 3);
         CHECK(fit->colorspace == "lin_rec709");
+        CHECK(fit->encoding == StackEncoding::DisplayEncoded);
+        CHECK(fit->conditioning.lights == 24);
+        CHECK(fit->conditioning.terms == basis_terms(model));
+        if (model == LinearModel::PtmRgb) CHECK(fit->conditioning.condition_number == conditioning->condition_number);
         const int terms = basis_terms(model);
         REQUIRE(fit->coefficients.size() == stack.texels() * static_cast<std::size_t>(fit->stride()));
         const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(design_matrix(model, lights));
@@ -420,5 +427,17 @@ TEST_CASE("linear fit: the PTM-LRGB base colour is the least-squares colour for 
         // Its Rec. 709 luminance is 1: the fitted luminance is the
         // projection of the luminance onto the polynomials.
         CHECK(0.2126 * a[6] + 0.7152 * a[7] + 0.0722 * a[8] == doctest::Approx(1.0).epsilon(1e-5));
+    }
+
+    // One channel: the luminance is the channel, and its base colour 1.
+    const ImageStack grey = random_stack(rng, 4, 3, 1, lights);
+    auto grey_fit = fit_linear(grey, options);
+    REQUIRE(grey_fit);
+    REQUIRE(grey_fit->stride() == 7);
+    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(design_matrix(LinearModel::PtmLrgb, lights));
+    for (std::size_t t = 0; t < grey.texels(); ++t) {
+        const Eigen::VectorXd x = qr.solve(texel_values(grey, t, 0));
+        for (int k = 0; k < 6; ++k) CHECK(grey_fit->texel(t)[k] == doctest::Approx(x(k)).epsilon(1e-5));
+        CHECK(grey_fit->texel(t)[6] == doctest::Approx(1.0).epsilon(1e-5));
     }
 }
