@@ -11,7 +11,11 @@
 // the one channel) is fitted by the polynomial P; the base colour c of a
 // texel is then the least-squares colour for the fitted luminance,
 // c = sum_k I_k P(l_k) / sum_k P(l_k)^2 (I_k the texel's value under light
-// k), so that c P(l) is the best colour for the fitted shape.
+// k), so that c P(l) is the best colour for the fitted shape (its Rec. 709
+// luminance is then 1, or the one channel 1). Where sum_k P(l_k)^2 is
+// negligible (below 1e-12 of sum_k Y_k^2, or 1e-30: a black or flat texel)
+// c is the texel's mean colour over its mean luminance, or 0 when that is
+// negligible too.
 #pragma once
 
 #include "cmfilter/stack/image_stack.h"
@@ -58,16 +62,24 @@ struct LinearFit {
     const float* texel(std::size_t t) const { return coefficients.data() + t * stride(); }
 };
 
-// The conditioning of `lights` for `model`, and BadInput when they cannot
-// determine it: fewer lights than terms, all lights (their projections
-// (lu, lv)) on one line through the pole ("collinear"), all at one
-// elevation (a PTM's lu^2 + lv^2 is then constant: "all at one elevation,
-// N degrees"), or a rank below the terms for another reason.
+// The conditioning of `lights` for `model` (the singular values of the
+// light matrix), and BadInput when they cannot determine it, checked in this
+// order: fewer lights than terms (field LinearFitOptions::model: another
+// model may fit); all lights' projections (lu, lv) on one line through the
+// pole ("collinear": the smaller singular value of the 2 x N matrix of
+// projections below 1e-4 of the larger; the message gives the line's
+// azimuth); all at one elevation (lz spread below 1e-4: "all at one
+// elevation, 45.0 degrees"; a PTM's lu^2 + lv^2, an HSH's cos(theta) is
+// then constant); a rank below the terms for another reason ("rank 5 of
+// 6", with the singular values and the condition number). BadInput naming
+// LinearFitOptions::singular_threshold unless it is finite and in [0, 1).
 Expected<LightSetConditioning> check_light_set(const std::vector<Vec3>& lights, LinearModel model,
                                                double singular_threshold = 1e-6);
 
 // BadInput as check_light_set (naming the stack's light file); a PtmLrgb
-// fit of a stack with other than 1 or 3 channels.
+// fit of a stack with other than 1 or 3 channels (field
+// LinearFitOptions::model); a stack whose sizes and pixel count disagree.
+// Deterministic for any thread count.
 Expected<LinearFit> fit_linear(const ImageStack& stack, const LinearFitOptions& options);
 
 // The model at light `light` (unit, z >= 0) for every texel:
