@@ -141,15 +141,12 @@ Expected<LightSetConditioning> check_light_set(const std::vector<Vec3>& lights, 
     for (int j = 0; j < terms; ++j)
         if (s(j) > singular_threshold * s(0) && s(j) > 0) ++rank;
     c.clamped = terms - rank;
-    c.condition_number = c.clamped == 0 ? s(0) / s(terms - 1) : std::numeric_limits<double>::infinity();
-    if (rank < terms)
+    // Largest over smallest kept: a rank deficiency other than the named
+    // ones is clamped (the minimum-norm least-squares fit), not refused.
+    c.condition_number = rank > 0 ? s(0) / s(rank - 1) : std::numeric_limits<double>::infinity();
+    if (rank == 0)
         return bad_input("the " + std::to_string(n) + " lights cannot determine a " + name +
-                         " fit: the light matrix has rank " + std::to_string(rank) + " of " + std::to_string(terms) +
-                         " (singular values from " + format_number("%.3g", c.largest_singular) + " down to " +
-                         format_number("%.3g", c.smallest_singular) + ", condition number " +
-                         format_number("%.3g", c.smallest_singular > 0 ? s(0) / c.smallest_singular
-                                                                       : std::numeric_limits<double>::infinity()) +
-                         "; LinearFitOptions::singular_threshold " + format_number("%g", singular_threshold) + ")");
+                         " fit: every singular value of the light matrix is zero");
     return c;
 }
 

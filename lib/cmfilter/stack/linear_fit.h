@@ -33,7 +33,7 @@ struct LightSetConditioning {
     int lights = 0;
     int terms = 0;
     double largest_singular = 0, smallest_singular = 0;
-    double condition_number = 0;  // largest / smallest kept; inf when one was clamped
+    double condition_number = 0;  // largest / smallest kept
     int clamped = 0;              // singular values taken as zero
 };
 
