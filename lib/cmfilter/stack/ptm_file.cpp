@@ -1,17 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/stack/ptm_file.h"
 
+#include "cmfilter/stack/quantised_fit_file.h"
 #include "cmfilter/stack/relit_difference.h"
-#include "cmfilter/util/atomic_output.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
-#include <iterator>
 #include <limits>
 #include <sstream>
 
@@ -21,6 +18,9 @@ namespace {
 
 constexpr int kPtmTerms = 6;
 constexpr int kPtmMaxSide = 65536;
+
+constexpr QuantisedFitFormat kPtmFormat = {
+    ".ptm", "a .ptm", "a .ptm", {LinearModel::PtmRgb, LinearModel::PtmLrgb}, kPtmMaxSide};
 
 // ---------------------------------------------------------------- writing
 
@@ -108,86 +108,7 @@ std::string ptm_header(const LinearFit& fit, const TermCode (&codes)[kPtmTerms])
     return header.str();
 }
 
-Status check_writable_fit(const std::string& path, const LinearFit& fit)
-{
-    const std::string where = "cannot write '" + path + "' as .ptm: ";
-    if (fit.model != LinearModel::PtmRgb && fit.model != LinearModel::PtmLrgb)
-        return bad_input(where + "the fit's model is " + to_string(fit.model) + "; a .ptm holds ptm-rgb or ptm-lrgb");
-    if (fit.channels != 3)
-        return bad_input(where + "the fit has " + std::to_string(fit.channels) + " channel(s); a .ptm holds 3 (RGB)");
-    if (fit.encoding != StackEncoding::DisplayEncoded)
-        return bad_input(where + "the fit is of scene-linear values; a .ptm holds display-encoded ones (fit the "
-                                 "stack with its values display-encoded)");
-    if (fit.width <= 0 || fit.height <= 0 || fit.width > kPtmMaxSide || fit.height > kPtmMaxSide)
-        return bad_input(where + "its size " + std::to_string(fit.width) + " x " + std::to_string(fit.height) +
-                         " is not within 1 .. " + std::to_string(kPtmMaxSide));
-    if (fit.coefficients.size() != fit.texels() * fit.stride())
-        return bad_input(where + "it holds " + std::to_string(fit.coefficients.size()) + " coefficients, not " +
-                         std::to_string(fit.texels() * fit.stride()));
-    for (std::size_t i = 0; i < fit.coefficients.size(); ++i)
-        if (!std::isfinite(fit.coefficients[i])) {
-            const std::size_t t = i / fit.stride();
-            return bad_input(where + "texel (" + std::to_string(t % fit.width) + ", " + std::to_string(t / fit.width) +
-                             ") has a non-finite coefficient");
-        }
-    return ok();
-}
-
 // ---------------------------------------------------------------- reading
-
-// A read position in the file's bytes.
-struct Cursor {
-    const std::string& bytes;
-    std::size_t pos = 0;
-
-    bool at_end() const { return pos >= bytes.size(); }
-    // The rest of the line (without "\n" and a trailing "\r"); false at the end.
-    bool line(std::string& out)
-    {
-        if (at_end()) return false;
-        const std::size_t end = bytes.find('\n', pos);
-        out = bytes.substr(pos, end == std::string::npos ? std::string::npos : end - pos);
-        pos = end == std::string::npos ? bytes.size() : end + 1;
-        while (!out.empty() && (out.back() == '\r' || out.back() == ' ' || out.back() == '\t')) out.pop_back();
-        return true;
-    }
-    // The next whitespace-separated token (possibly on a later line); false at the end.
-    bool token(std::string& out)
-    {
-        while (!at_end() && std::isspace(static_cast<unsigned char>(bytes[pos]))) ++pos;
-        if (at_end()) return false;
-        const std::size_t start = pos;
-        while (!at_end() && !std::isspace(static_cast<unsigned char>(bytes[pos]))) ++pos;
-        out = bytes.substr(start, pos - start);
-        return true;
-    }
-    // Past the spaces and the newline that end the current line.
-    bool end_of_line()
-    {
-        while (!at_end() && (bytes[pos] == ' ' || bytes[pos] == '\t' || bytes[pos] == '\r')) ++pos;
-        if (at_end() || bytes[pos] != '\n') return false;
-        ++pos;
-        return true;
-    }
-};
-
-// A header text as it may be quoted in a message: printable, short.
-std::string quoted(const std::string& text)
-{
-    std::string q;
-    for (char c : text.substr(0, 40)) q += std::isprint(static_cast<unsigned char>(c)) ? c : '?';
-    if (text.size() > 40) q += "...";
-    return "'" + q + "'";
-}
-
-bool parse_int(const std::string& token, long long& value)
-{
-    if (token.empty()) return false;
-    errno = 0;
-    char* end = nullptr;
-    value = std::strtoll(token.c_str(), &end, 10);
-    return errno == 0 && end == token.c_str() + token.size();
-}
 
 bool parse_double(const std::string& token, double& value)
 {
@@ -203,13 +124,14 @@ bool parse_double(const std::string& token, double& value)
 Expected<LinearFit> decode_ptm(const std::string& bytes, const std::string& name)
 {
     const std::string where = "'" + name + "' ";
-    Cursor in{bytes};
+    ByteCursor in{bytes};
     std::string version, format;
     in.line(version);
     if (version != "PTM_1.2") {
         if (version.rfind("PTM_", 0) == 0)
-            return bad_input(where + "is PTM version " + quoted(version) + "; cmfilter reads PTM_1.2");
-        return bad_input(where + "is not a PTM 1.2 file: its first line is " + quoted(version) + ", expected PTM_1.2");
+            return bad_input(where + "is PTM version " + quoted_header(version) + "; cmfilter reads PTM_1.2");
+        return bad_input(where + "is not a PTM 1.2 file: its first line is " + quoted_header(version) +
+                         ", expected PTM_1.2");
     }
     if (!in.line(format)) return bad_input(where + "ends after its version line (expected a format line)");
     LinearModel model;
@@ -223,7 +145,7 @@ Expected<LinearFit> decode_ptm(const std::string& bytes, const std::string& name
         return bad_input(where + "is in format " + format +
                          ", which cmfilter does not support; it reads PTM_FORMAT_RGB and PTM_FORMAT_LRGB");
     } else {
-        return bad_input(where + "has an unknown format line " + quoted(format) +
+        return bad_input(where + "has an unknown format line " + quoted_header(format) +
                          " (expected PTM_FORMAT_RGB or PTM_FORMAT_LRGB)");
     }
 
@@ -232,9 +154,9 @@ Expected<LinearFit> decode_ptm(const std::string& bytes, const std::string& name
     for (int i = 0; i < 2; ++i) {
         std::string token;
         if (!in.token(token)) return bad_input(where + "ends before its " + size_names[i]);
-        if (!parse_int(token, size[i]) || size[i] < 1 || size[i] > kPtmMaxSide)
-            return bad_input(where + "has " + size_names[i] + " " + quoted(token) + ", expected an integer in 1 .. " +
-                             std::to_string(kPtmMaxSide));
+        if (!parse_integer_token(token, size[i]) || size[i] < 1 || size[i] > kPtmMaxSide)
+            return bad_input(where + "has " + size_names[i] + " " + quoted_header(token) +
+                             ", expected an integer in 1 .. " + std::to_string(kPtmMaxSide));
     }
     double scale[kPtmTerms];
     long long bias[kPtmTerms];
@@ -242,15 +164,16 @@ Expected<LinearFit> decode_ptm(const std::string& bytes, const std::string& name
         std::string token;
         if (!in.token(token)) return bad_input(where + "ends before its scale " + std::to_string(k));
         if (!parse_double(token, scale[k]))
-            return bad_input(where + "has scale " + std::to_string(k) + " " + quoted(token) +
+            return bad_input(where + "has scale " + std::to_string(k) + " " + quoted_header(token) +
                              ", expected a finite number");
         scale[k] = static_cast<float>(scale[k]);  // as the viewers hold it
     }
     for (int k = 0; k < kPtmTerms; ++k) {
         std::string token;
         if (!in.token(token)) return bad_input(where + "ends before its bias " + std::to_string(k));
-        if (!parse_int(token, bias[k]) || std::llabs(bias[k]) > (1 << 24))
-            return bad_input(where + "has bias " + std::to_string(k) + " " + quoted(token) + ", expected an integer");
+        if (!parse_integer_token(token, bias[k]) || std::llabs(bias[k]) > (1 << 24))
+            return bad_input(where + "has bias " + std::to_string(k) + " " + quoted_header(token) +
+                             ", expected an integer");
     }
     if (!in.end_of_line() && !in.at_end())
         return bad_input(where + "has more than six biases, or no newline after them");
@@ -303,16 +226,14 @@ Expected<LinearFit> decode_ptm(const std::string& bytes, const std::string& name
 
 Expected<LinearFit> read_ptm(const std::string& path)
 {
-    std::ifstream file(path, std::ios::binary);
-    if (!file) return io_error("cannot open '" + path + "' for reading");
-    std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-    if (file.bad()) return io_error("cannot read '" + path + "'");
-    return decode_ptm(bytes, path);
+    auto bytes = read_file_bytes(path);
+    if (!bytes) return bytes.error();
+    return decode_ptm(*bytes, path);
 }
 
 Status write_ptm(const std::string& path, const LinearFit& fit, PtmQuantisation* quantisation)
 {
-    if (auto checked = check_writable_fit(path, fit); !checked) return checked.error();
+    if (auto checked = check_writable_fit(path, fit, kPtmFormat); !checked) return checked.error();
     const PtmTerms terms = file_terms(fit);
     const std::size_t n = fit.texels();
     const int planes = fit.model == LinearModel::PtmRgb ? 3 : 1;
@@ -374,16 +295,7 @@ Status write_ptm(const std::string& path, const LinearFit& fit, PtmQuantisation*
         *quantisation = q;
     }
 
-    auto out = AtomicOutput::begin(path);
-    if (!out) return out.error();
-    {
-        std::ofstream file(out->temp_path(), std::ios::binary);
-        if (!file) return io_error("cannot open '" + out->temp_path() + "' for writing");
-        file.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-        file.close();
-        if (!file) return io_error("cannot write '" + path + "'");
-    }
-    return out->commit();
+    return write_file_bytes(path, bytes);
 }
 
 }  // namespace cmfilter

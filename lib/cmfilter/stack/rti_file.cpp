@@ -1,18 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/stack/rti_file.h"
 
+#include "cmfilter/stack/quantised_fit_file.h"
 #include "cmfilter/stack/relit_difference.h"
-#include "cmfilter/util/atomic_output.h"
 
 #include <algorithm>
-#include <cctype>
-#include <cerrno>
 #include <cmath>
 #include <cstdint>
-#include <cstdlib>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 #include <sstream>
 #include <vector>
 
@@ -21,6 +16,9 @@ namespace cmfilter {
 namespace {
 
 constexpr int kRtiMaxSide = 65536;
+
+constexpr QuantisedFitFormat kRtiFormat = {
+    ".rti", "an HSH .rti", "an .rti", {LinearModel::Hsh2, LinearModel::Hsh3}, kRtiMaxSide};
 
 // ---------------------------------------------------------------- bytes
 
@@ -40,59 +38,7 @@ float get_float_le(const unsigned char* p)
     return v;
 }
 
-// ---------------------------------------------------------------- writing
-
-Status check_writable_fit(const std::string& path, const LinearFit& fit)
-{
-    const std::string where = "cannot write '" + path + "' as .rti: ";
-    if (fit.model != LinearModel::Hsh2 && fit.model != LinearModel::Hsh3)
-        return bad_input(where + "the fit's model is " + to_string(fit.model) + "; an HSH .rti holds hsh2 or hsh3");
-    if (fit.channels != 3)
-        return bad_input(where + "the fit has " + std::to_string(fit.channels) +
-                         " channel(s); an HSH .rti holds 3 (RGB)");
-    if (fit.encoding != StackEncoding::DisplayEncoded)
-        return bad_input(where + "the fit is of scene-linear values; an .rti holds display-encoded ones (fit the "
-                                 "stack with its values display-encoded)");
-    if (fit.width <= 0 || fit.height <= 0 || fit.width > kRtiMaxSide || fit.height > kRtiMaxSide)
-        return bad_input(where + "its size " + std::to_string(fit.width) + " x " + std::to_string(fit.height) +
-                         " is not within 1 .. " + std::to_string(kRtiMaxSide));
-    if (fit.coefficients.size() != fit.texels() * fit.stride())
-        return bad_input(where + "it holds " + std::to_string(fit.coefficients.size()) + " coefficients, not " +
-                         std::to_string(fit.texels() * fit.stride()));
-    for (std::size_t i = 0; i < fit.coefficients.size(); ++i)
-        if (!std::isfinite(fit.coefficients[i])) {
-            const std::size_t t = i / fit.stride();
-            return bad_input(where + "texel (" + std::to_string(t % fit.width) + ", " + std::to_string(t / fit.width) +
-                             ") has a non-finite coefficient");
-        }
-    return ok();
-}
-
 // ---------------------------------------------------------------- reading
-
-struct Cursor {
-    const std::string& bytes;
-    std::size_t pos = 0;
-
-    bool at_end() const { return pos >= bytes.size(); }
-    bool line(std::string& out)
-    {
-        if (at_end()) return false;
-        const std::size_t end = bytes.find('\n', pos);
-        out = bytes.substr(pos, end == std::string::npos ? std::string::npos : end - pos);
-        pos = end == std::string::npos ? bytes.size() : end + 1;
-        while (!out.empty() && std::isspace(static_cast<unsigned char>(out.back()))) out.pop_back();
-        return true;
-    }
-};
-
-std::string quoted(const std::string& text)
-{
-    std::string q;
-    for (char c : text.substr(0, 40)) q += std::isprint(static_cast<unsigned char>(c)) ? c : '?';
-    if (text.size() > 40) q += "...";
-    return "'" + q + "'";
-}
 
 // The line's whitespace-separated integers; false unless there are exactly `count`.
 bool line_integers(const std::string& line, int count, std::vector<long long>& values)
@@ -101,10 +47,8 @@ bool line_integers(const std::string& line, int count, std::vector<long long>& v
     std::string token;
     values.clear();
     while (in >> token) {
-        errno = 0;
-        char* end = nullptr;
-        const long long v = std::strtoll(token.c_str(), &end, 10);
-        if (errno != 0 || end != token.c_str() + token.size()) return false;
+        long long v;
+        if (!parse_integer_token(token, v)) return false;
         values.push_back(v);
     }
     return static_cast<int>(values.size()) == count;
@@ -115,18 +59,19 @@ bool line_integers(const std::string& line, int count, std::vector<long long>& v
 Expected<LinearFit> decode_rti(const std::string& bytes, const std::string& name)
 {
     const std::string where = "'" + name + "' ";
-    Cursor in{bytes};
+    ByteCursor in{bytes};
     std::string line;
     in.line(line);
     if (line.rfind("#HSH1.2", 0) != 0)
-        return bad_input(where + "is not an HSH .rti file: its first line is " + quoted(line) + ", expected #HSH1.2");
+        return bad_input(where + "is not an HSH .rti file: its first line is " + quoted_header(line) +
+                         ", expected #HSH1.2");
     do {
         if (!in.line(line)) return bad_input(where + "ends before its RTI type line");
     } while (!line.empty() && line[0] == '#');
 
     std::vector<long long> v;
     if (!line_integers(line, 1, v))
-        return bad_input(where + "has RTI type line " + quoted(line) + ", expected 3 (HSH)");
+        return bad_input(where + "has RTI type line " + quoted_header(line) + ", expected 3 (HSH)");
     if (v[0] != 3) {
         const char* names[] = {"reserved", "PTM", "SH", "HSH", "adaptive basis"};
         const std::string kind = v[0] >= 0 && v[0] <= 4 ? std::string(" (") + names[v[0]] + ")" : std::string();
@@ -135,7 +80,8 @@ Expected<LinearFit> decode_rti(const std::string& bytes, const std::string& name
     }
     if (!in.line(line)) return bad_input(where + "ends before its size line (width height bands)");
     if (!line_integers(line, 3, v))
-        return bad_input(where + "has size line " + quoted(line) + ", expected three integers: width height bands");
+        return bad_input(where + "has size line " + quoted_header(line) +
+                         ", expected three integers: width height bands");
     for (int i = 0; i < 2; ++i)
         if (v[i] < 1 || v[i] > kRtiMaxSide)
             return bad_input(where + "has " + (i == 0 ? "width " : "height ") + std::to_string(v[i]) +
@@ -150,7 +96,7 @@ Expected<LinearFit> decode_rti(const std::string& bytes, const std::string& name
 
     if (!in.line(line)) return bad_input(where + "ends before its basis line (terms basis-type element-size)");
     if (!line_integers(line, 3, v))
-        return bad_input(where + "has basis line " + quoted(line) +
+        return bad_input(where + "has basis line " + quoted_header(line) +
                          ", expected three integers: terms basis-type element-size");
     if (v[0] == 4) {
         fit.model = LinearModel::Hsh2;
@@ -201,16 +147,14 @@ Expected<LinearFit> decode_rti(const std::string& bytes, const std::string& name
 
 Expected<LinearFit> read_rti(const std::string& path)
 {
-    std::ifstream file(path, std::ios::binary);
-    if (!file) return io_error("cannot open '" + path + "' for reading");
-    std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-    if (file.bad()) return io_error("cannot read '" + path + "'");
-    return decode_rti(bytes, path);
+    auto bytes = read_file_bytes(path);
+    if (!bytes) return bytes.error();
+    return decode_rti(*bytes, path);
 }
 
 Status write_rti(const std::string& path, const LinearFit& fit, RtiQuantisation* quantisation)
 {
-    if (auto checked = check_writable_fit(path, fit); !checked) return checked.error();
+    if (auto checked = check_writable_fit(path, fit, kRtiFormat); !checked) return checked.error();
     const int terms = fit.terms();
     float scale[kMaxLinearTerms], bias[kMaxLinearTerms];
     for (int k = 0; k < terms; ++k) {
@@ -254,16 +198,7 @@ Status write_rti(const std::string& path, const LinearFit& fit, RtiQuantisation*
         *quantisation = q;
     }
 
-    auto out = AtomicOutput::begin(path);
-    if (!out) return out.error();
-    {
-        std::ofstream file(out->temp_path(), std::ios::binary);
-        if (!file) return io_error("cannot open '" + out->temp_path() + "' for writing");
-        file.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-        file.close();
-        if (!file) return io_error("cannot write '" + path + "'");
-    }
-    return out->commit();
+    return write_file_bytes(path, bytes);
 }
 
 }  // namespace cmfilter

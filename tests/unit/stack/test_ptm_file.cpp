@@ -7,6 +7,7 @@
 #include "cmfilter/stack/relit_difference.h"
 
 #include "ptm_test_files.h"
+#include "quantised_fit_test_support.h"
 #include "test_images.h"
 
 #include <doctest/doctest.h>
@@ -25,13 +26,7 @@ std::string scratch(const std::string& name) { return temp_dir("cmfilter_test_pt
 
 LinearFit random_fit(LinearModel model, int width, int height, std::mt19937_64& rng)
 {
-    LinearFit fit;
-    fit.model = model;
-    fit.width = width;
-    fit.height = height;
-    fit.channels = 3;
-    fit.encoding = StackEncoding::DisplayEncoded;
-    fit.coefficients.resize(fit.texels() * fit.stride());
+    LinearFit fit = display_encoded_fit(model, width, height);
     std::uniform_real_distribution<double> coefficient(-0.6, 1.2), color(0.05, 2.5);
     for (std::size_t t = 0; t < fit.texels(); ++t)
         for (int i = 0; i < fit.stride(); ++i)
@@ -40,30 +35,37 @@ LinearFit random_fit(LinearModel model, int width, int height, std::mt19937_64& 
     return fit;
 }
 
-std::vector<Vec3> random_directions(std::mt19937_64& rng, int n)
-{
-    std::uniform_real_distribution<double> u(0.0, 1.0);
-    std::vector<Vec3> d;
-    for (int i = 0; i < n; ++i) {
-        const double z = u(rng), phi = 2 * 3.14159265358979323846 * u(rng), r = std::sqrt(1 - z * z);
-        d.push_back({r * std::cos(phi), r * std::sin(phi), z});
-    }
-    return d;
-}
+// A fit written by write_ptm: the quantisation it states, the file parsed
+// here and the fit read_ptm reads back from it.
+struct WrittenPtm {
+    PtmQuantisation quantisation;
+    ParsedPtm parsed;
+    LinearFit back;
+};
 
-// A fit's relit value, computed here from the basis (PtmLrgb: the polynomial
-// times the base colour).
-double relit(const LinearFit& fit, std::size_t t, int c, const Vec3& l)
+// `fit` written to `path`; the parsed file checked to hold the documented
+// header for the fit's format and size, integral biases within 0 .. 255,
+// positive scales, and 18 (RGB) or 9 (LRGB) bytes a texel.
+WrittenPtm write_and_read_back(const LinearFit& fit, const std::string& path)
 {
-    const auto b = evaluate_basis(fit.model, l);
-    const float* v = fit.coefficients.data() + t * fit.stride();
-    double s = 0;
-    if (fit.model == LinearModel::PtmLrgb) {
-        for (int k = 0; k < 6; ++k) s += v[k] * b[k];
-        return s * v[6 + c];
+    PtmQuantisation q;
+    REQUIRE(write_ptm(path, fit, &q));
+    const ParsedPtm p = parse_ptm_by_hand(read_bytes(path));
+    const bool rgb = fit.model == LinearModel::PtmRgb;
+    CHECK(p.version == "PTM_1.2");
+    CHECK(p.format == (rgb ? "PTM_FORMAT_RGB" : "PTM_FORMAT_LRGB"));
+    CHECK(p.width == fit.width);
+    CHECK(p.height == fit.height);
+    CHECK(p.biases_integral);
+    for (int k = 0; k < 6; ++k) {
+        CHECK(p.scales[k] > 0);
+        CHECK(p.biases[k] >= 0);
+        CHECK(p.biases[k] <= 255);
     }
-    for (int k = 0; k < fit.terms(); ++k) s += v[c * fit.terms() + k] * b[k];
-    return s;
+    REQUIRE(p.data.size() == fit.texels() * (rgb ? 18 : 9));
+    auto back = read_ptm(path);
+    REQUIRE_MESSAGE(back, (back ? "" : back.error().message));
+    return {q, p, *back};
 }
 
 int rgb_byte(int c, int x, int y, int k) { return (17 * c + 5 * x + 60 * y + 3 * k + 1) % 256; }
@@ -133,7 +135,7 @@ TEST_CASE("ptm: a hand-made PTM_FORMAT_LRGB file decodes to its polynomial (code
     double lum_codes = 0;
     for (int k = 0; k < 6; ++k)
         lum_codes += (lum_byte(1, 2, k) - kBiases[k]) * kScales[k] * evaluate_basis(fit->model, l)[k];
-    CHECK(relit(*fit, 2 * w + 1, 0, l) ==
+    CHECK(relit_value(*fit, 2 * w + 1, 0, l) ==
           doctest::Approx(lum_codes / 255.0 * color_byte(1, 2, 0) / 255.0).epsilon(1e-5));
 }
 
@@ -141,23 +143,7 @@ TEST_CASE("ptm: PTM_FORMAT_RGB written and read back is within half a quantisati
 {
     std::mt19937_64 rng(17);
     const LinearFit fit = random_fit(LinearModel::PtmRgb, 7, 5, rng);
-    const std::string path = scratch("round_trip_rgb.ptm");
-    PtmQuantisation q;
-    REQUIRE(write_ptm(path, fit, &q));
-
-    // The file, parsed here: the documented header, biases bytes, 18 bytes a texel.
-    const ParsedPtm p = parse_ptm_by_hand(read_bytes(path));
-    CHECK(p.version == "PTM_1.2");
-    CHECK(p.format == "PTM_FORMAT_RGB");
-    CHECK(p.width == 7);
-    CHECK(p.height == 5);
-    CHECK(p.biases_integral);
-    for (int k = 0; k < 6; ++k) {
-        CHECK(p.scales[k] > 0);
-        CHECK(p.biases[k] >= 0);
-        CHECK(p.biases[k] <= 255);
-    }
-    REQUIRE(p.data.size() == std::size_t(7 * 5 * 18));
+    const auto [q, p, back] = write_and_read_back(fit, scratch("round_trip_rgb.ptm"));
     // Three planes, rows bottom to top: each coefficient within scale / 2 (codes).
     std::size_t i = 0;
     for (int c = 0; c < 3; ++c)
@@ -169,14 +155,12 @@ TEST_CASE("ptm: PTM_FORMAT_RGB written and read back is within half a quantisati
                     CHECK(std::abs(codes - original) <= p.scales[k] / 2 * (1 + 1e-6) + 1e-4);
                 }
 
-    auto back = read_ptm(path);
-    REQUIRE(back);
-    double max_error[6] = {};
+    std::vector<double> max_error(6, 0.0);
     for (std::size_t t = 0; t < fit.texels(); ++t)
         for (int c = 0; c < 3; ++c)
             for (int k = 0; k < 6; ++k) {
                 const std::size_t j = t * 18 + c * 6 + k;
-                max_error[k] = std::max(max_error[k], std::abs(double(back->coefficients[j]) - fit.coefficients[j]));
+                max_error[k] = std::max(max_error[k], std::abs(double(back.coefficients[j]) - fit.coefficients[j]));
             }
     double bound = 0;
     for (int k = 0; k < 6; ++k) {
@@ -188,18 +172,8 @@ TEST_CASE("ptm: PTM_FORMAT_RGB written and read back is within half a quantisati
     }
     // Relit values: within sum_k e_k |B_k(l)| at any light; the stated error
     // at least the error at the pole (the first direction) and at most the bound.
-    for (const Vec3& l : random_directions(rng, 40)) {
-        const auto b = evaluate_basis(LinearModel::PtmRgb, l);
-        double local = 0;
-        for (int k = 0; k < 6; ++k) local += max_error[k] * std::abs(b[k]);
-        for (std::size_t t = 0; t < fit.texels(); ++t)
-            for (int c = 0; c < 3; ++c) CHECK(std::abs(relit(*back, t, c, l) - relit(fit, t, c, l)) <= local + 1e-6);
-    }
-    double pole = 0;
-    for (std::size_t t = 0; t < fit.texels(); ++t)
-        for (int c = 0; c < 3; ++c)
-            pole = std::max(pole, std::abs(relit(*back, t, c, {0, 0, 1}) - relit(fit, t, c, {0, 0, 1})));
-    CHECK(q.max_value_error >= pole - 1e-7);
+    check_relit_within_term_errors(back, fit, max_error, random_hemisphere_directions(rng, 40));
+    CHECK(q.max_value_error >= max_relit_difference_at_pole(back, fit) - 1e-7);
     CHECK(q.max_value_error <= bound + 1e-6);
     CHECK(q.max_value_error > 0);
 }
@@ -208,13 +182,7 @@ TEST_CASE("ptm: PTM_FORMAT_LRGB moves the base colour's largest channel into the
 {
     std::mt19937_64 rng(29);
     const LinearFit fit = random_fit(LinearModel::PtmLrgb, 6, 4, rng);
-    const std::string path = scratch("round_trip_lrgb.ptm");
-    PtmQuantisation q;
-    REQUIRE(write_ptm(path, fit, &q));
-    const ParsedPtm p = parse_ptm_by_hand(read_bytes(path));
-    CHECK(p.format == "PTM_FORMAT_LRGB");
-    CHECK(p.biases_integral);
-    REQUIRE(p.data.size() == std::size_t(6 * 4 * 9));
+    const auto [q, p, back] = write_and_read_back(fit, scratch("round_trip_lrgb.ptm"));
 
     // Expected, per texel: m the largest channel, colour c / m, polynomial P m.
     const int w = 6, h = 4;
@@ -237,13 +205,11 @@ TEST_CASE("ptm: PTM_FORMAT_LRGB moves the base colour's largest channel into the
             CHECK(static_cast<unsigned char>(p.data[6 * w * h + (r * w + x) * 3 + largest]) == 255);
         }
 
-    auto back = read_ptm(path);
-    REQUIRE(back);
     double e[6] = {};
     for (std::size_t t = 0; t < fit.texels(); ++t) {
         const float* v = fit.coefficients.data() + t * 9;
         const double m = std::max({v[6], v[7], v[8]});
-        for (int k = 0; k < 6; ++k) e[k] = std::max(e[k], std::abs(back->coefficients[t * 9 + k] - v[k] * m));
+        for (int k = 0; k < 6; ++k) e[k] = std::max(e[k], std::abs(back.coefficients[t * 9 + k] - v[k] * m));
     }
     for (int k = 0; k < 6; ++k) {
         CHECK(e[k] <= p.scales[k] / 510.0 * (1 + 1e-5));
@@ -251,7 +217,7 @@ TEST_CASE("ptm: PTM_FORMAT_LRGB moves the base colour's largest channel into the
     }
     CHECK(q.max_color_error <= 0.5 / 255 + 1e-9);
     // Relit P' c' - P c = dP(l) c' + P'(l) dc + dP(l) dc, with c' <= 1, |dc| <= 1/510.
-    for (const Vec3& l : random_directions(rng, 40)) {
+    for (const Vec3& l : random_hemisphere_directions(rng, 40)) {
         const auto b = evaluate_basis(LinearModel::PtmLrgb, l);
         double dp = 0;
         for (int k = 0; k < 6; ++k) dp += e[k] * std::abs(b[k]);
@@ -261,7 +227,8 @@ TEST_CASE("ptm: PTM_FORMAT_LRGB moves the base colour's largest channel into the
             double pl = 0;
             for (int k = 0; k < 6; ++k) pl += v[k] * m * b[k];
             const double bound = dp * (1 + 0.5 / 255) + std::abs(pl) * 0.5 / 255 + 1e-6;
-            for (int c = 0; c < 3; ++c) CHECK(std::abs(relit(*back, t, c, l) - relit(fit, t, c, l)) <= bound);
+            for (int c = 0; c < 3; ++c)
+                CHECK(std::abs(relit_value(back, t, c, l) - relit_value(fit, t, c, l)) <= bound);
         }
     }
     CHECK(q.max_value_error > 0);
@@ -299,11 +266,8 @@ TEST_CASE("ptm: bad header lines are refused naming the line and what was expect
 {
     const std::string path = scratch("bad_header.ptm");
     const std::string data = ptm_rgb_bytes(3, 2, rgb_byte);
-    struct Case {
-        std::string bytes, message;
-    };
     const std::string good_scales = "0.5 1.25 2 0.25 4 1", good_biases = "10 20 30 40 50 0";
-    const std::vector<Case> cases = {
+    const std::vector<RefusedFile> cases = {
         {"P6\n3 2\n255\n" + data, "is not a PTM 1.2 file: its first line is 'P6', expected PTM_1.2"},
         {"PTM_1.1\nPTM_FORMAT_RGB\n" + data, "is PTM version 'PTM_1.1'; cmfilter reads PTM_1.2"},
         {ptm_header_text("PTM_FORMAT_XYZ", 3, 2, good_scales, good_biases) + data,
@@ -319,18 +283,7 @@ TEST_CASE("ptm: bad header lines are refused naming the line and what was expect
          "has bias 2 '30.5', expected an integer"},
         {ptm_header_text("PTM_FORMAT_RGB", 3, 2, good_scales, "10 20 30 40 50 0 7") + data, "more than six biases"},
     };
-    for (const Case& c : cases) {
-        CAPTURE(c.message);
-        write_bytes(path, c.bytes);
-        auto fit = read_ptm(path);
-        REQUIRE_FALSE(fit);
-        CHECK(fit.error().kind == ErrorKind::BadInput);
-        CHECK(fit.error().message.find("'" + path + "'") != std::string::npos);
-        CHECK(fit.error().message.find(c.message) != std::string::npos);
-    }
-    auto missing = read_ptm(scratch("no_such_file.ptm"));
-    REQUIRE_FALSE(missing);
-    CHECK(missing.error().kind == ErrorKind::Io);
+    check_files_refused(read_ptm, path, cases, scratch("no_such_file.ptm"));
 }
 
 TEST_CASE("ptm: JPEG-compressed and other formats are refused as not supported")
@@ -353,33 +306,18 @@ TEST_CASE("ptm: JPEG-compressed and other formats are refused as not supported")
 TEST_CASE("ptm: write_ptm refuses other models, channel counts, encodings and non-finite values, leaving no file")
 {
     std::mt19937_64 rng(3);
-    const std::string path = scratch("refused.ptm");
-    std::filesystem::remove(path);
-    struct Case {
-        LinearFit fit;
-        std::string message;
+    // In a braced list the fits are made, and rng drawn, in order.
+    const std::vector<RefusedFit> cases = {
+        {random_fit(LinearModel::Hsh2, 2, 2, rng), "the fit's model is hsh2; a .ptm holds ptm-rgb or ptm-lrgb"},
+        {with_channels(random_fit(LinearModel::PtmRgb, 2, 2, rng), 1),
+         "the fit has 1 channel(s); a .ptm holds 3 (RGB)"},
+        {as_scene_linear(random_fit(LinearModel::PtmLrgb, 2, 2, rng)),
+         "the fit is of scene-linear values; a .ptm holds display-encoded ones"},
+        {with_coefficient(random_fit(LinearModel::PtmRgb, 2, 2, rng), 3 * 18 + 4, std::nanf("")),
+         "texel (1, 1) has a non-finite coefficient"},
     };
-    std::vector<Case> cases;
-    cases.push_back(
-        {random_fit(LinearModel::Hsh2, 2, 2, rng), "the fit's model is hsh2; a .ptm holds ptm-rgb or ptm-lrgb"});
-    LinearFit gray = random_fit(LinearModel::PtmRgb, 2, 2, rng);
-    gray.channels = 1;
-    gray.coefficients.resize(gray.texels() * gray.stride());
-    cases.push_back({gray, "the fit has 1 channel(s); a .ptm holds 3 (RGB)"});
-    LinearFit linear = random_fit(LinearModel::PtmLrgb, 2, 2, rng);
-    linear.encoding = StackEncoding::SceneLinear;
-    cases.push_back({linear, "the fit is of scene-linear values; a .ptm holds display-encoded ones"});
-    LinearFit nan = random_fit(LinearModel::PtmRgb, 2, 2, rng);
-    nan.coefficients[3 * 18 + 4] = std::nanf("");
-    cases.push_back({nan, "texel (1, 1) has a non-finite coefficient"});
-    for (const Case& c : cases) {
-        CAPTURE(c.message);
-        auto written = write_ptm(path, c.fit);
-        REQUIRE_FALSE(written);
-        CHECK(written.error().kind == ErrorKind::BadInput);
-        CHECK(written.error().message.find("cannot write '" + path + "' as .ptm: " + c.message) != std::string::npos);
-        CHECK_FALSE(std::filesystem::exists(path));
-    }
+    check_fits_refused([](const std::string& path, const LinearFit& fit) { return write_ptm(path, fit); },
+                       scratch("refused.ptm"), ".ptm", cases);
 }
 
 TEST_CASE("relit difference: one coefficient changed by d differs by d times its basis function's largest value")

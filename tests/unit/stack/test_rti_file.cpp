@@ -6,6 +6,7 @@
 #include "cmfilter/stack/rti_file.h"
 
 #include "ptm_test_files.h"
+#include "quantised_fit_test_support.h"
 #include "test_images.h"
 
 #include <doctest/doctest.h>
@@ -25,25 +26,11 @@ std::string scratch(const std::string& name) { return temp_dir("cmfilter_test_rt
 
 LinearFit random_hsh_fit(LinearModel model, int width, int height, std::mt19937_64& rng)
 {
-    LinearFit fit;
-    fit.model = model;
-    fit.width = width;
-    fit.height = height;
-    fit.channels = 3;
-    fit.encoding = StackEncoding::DisplayEncoded;
-    fit.coefficients.resize(fit.texels() * fit.stride());
+    LinearFit fit = display_encoded_fit(model, width, height);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     for (std::size_t i = 0; i < fit.coefficients.size(); ++i)
         fit.coefficients[i] = static_cast<float>(u(rng) * (i % fit.terms() == 0 ? 2.0 : 0.4 / (1 + i % fit.terms())));
     return fit;
-}
-
-double relit(const LinearFit& fit, std::size_t t, int c, const Vec3& l)
-{
-    const auto b = evaluate_basis(fit.model, l);
-    double s = 0;
-    for (int k = 0; k < fit.terms(); ++k) s += fit.coefficients[t * fit.stride() + c * fit.terms() + k] * b[k];
-    return s;
 }
 
 int hsh_byte(int x, int y, int c, int k) { return (9 * x + 80 * y + 31 * c + 7 * k + 3) % 256; }
@@ -147,22 +134,8 @@ TEST_CASE("rti: HSH order 2 and 3 written and read back are within half a quanti
             CHECK(q.max_coefficient_error[k] == doctest::Approx(e[k]).epsilon(1e-6));
             bound += e[k] * largest[k] * 1.001;
         }
-        std::uniform_real_distribution<double> u(0.0, 1.0);
-        for (int n = 0; n < 40; ++n) {
-            const double z = u(rng), phi = 2 * pi * u(rng), r = std::sqrt(1 - z * z);
-            const Vec3 l{r * std::cos(phi), r * std::sin(phi), z};
-            const auto b = evaluate_basis(model, l);
-            double local = 0;
-            for (int k = 0; k < terms; ++k) local += e[k] * std::abs(b[k]);
-            for (std::size_t t = 0; t < fit.texels(); ++t)
-                for (int c = 0; c < 3; ++c)
-                    CHECK(std::abs(relit(*back, t, c, l) - relit(fit, t, c, l)) <= local + 1e-6);
-        }
-        double pole = 0;
-        for (std::size_t t = 0; t < fit.texels(); ++t)
-            for (int c = 0; c < 3; ++c)
-                pole = std::max(pole, std::abs(relit(*back, t, c, {0, 0, 1}) - relit(fit, t, c, {0, 0, 1})));
-        CHECK(q.max_value_error >= pole - 1e-7);
+        check_relit_within_term_errors(*back, fit, e, random_hemisphere_directions(rng, 40));
+        CHECK(q.max_value_error >= max_relit_difference_at_pole(*back, fit) - 1e-7);
         CHECK(q.max_value_error <= bound + 1e-6);
     }
 }
@@ -178,10 +151,7 @@ TEST_CASE("rti: bad and truncated HSH files are refused naming what is wrong")
         b.replace(b.find(from), from.size(), to);
         return b;
     };
-    struct Case {
-        std::string bytes, message;
-    };
-    const std::vector<Case> cases = {
+    const std::vector<RefusedFile> cases = {
         {"PTM_1.2\nPTM_FORMAT_RGB\n", "is not an HSH .rti file: its first line is 'PTM_1.2', expected #HSH1.2"},
         {replace("\n3\n3 2 3\n", "\n1\n3 2 3\n"),
          "is of RTI type 1 (PTM), which cmfilter does not support; it reads HSH (3)"},
@@ -195,15 +165,7 @@ TEST_CASE("rti: bad and truncated HSH files are refused naming what is wrong")
         {good.substr(0, good.size() - 5), "is truncated: expected 72 bytes of coefficients"},
         {"#HSH1.2\n#only comments\n", "ends before its RTI type line"},
     };
-    for (const Case& c : cases) {
-        CAPTURE(c.message);
-        write_bytes(path, c.bytes);
-        auto fit = read_rti(path);
-        REQUIRE_FALSE(fit);
-        CHECK(fit.error().kind == ErrorKind::BadInput);
-        CHECK(fit.error().message.find("'" + path + "'") != std::string::npos);
-        CHECK(fit.error().message.find(c.message) != std::string::npos);
-    }
+    check_files_refused(read_rti, path, cases, scratch("no_such_file.rti"));
     write_bytes(path, good.substr(0, good.size() - 5));
     auto fit = read_rti(path);
     REQUIRE_FALSE(fit);
@@ -216,40 +178,21 @@ TEST_CASE("rti: bad and truncated HSH files are refused naming what is wrong")
     fit = read_rti(path);
     REQUIRE_FALSE(fit);
     CHECK(fit.error().message.find("has a non-finite scale for term 1") != std::string::npos);
-
-    auto missing = read_rti(scratch("no_such_file.rti"));
-    REQUIRE_FALSE(missing);
-    CHECK(missing.error().kind == ErrorKind::Io);
 }
 
 TEST_CASE("rti: write_rti refuses PTM fits, other channel counts and encodings, leaving no file")
 {
     std::mt19937_64 rng(7);
-    const std::string path = scratch("refused.rti");
-    std::filesystem::remove(path);
-    struct Case {
-        LinearFit fit;
-        std::string message;
+    // In a braced list the fits are made, and rng drawn, in order.
+    const std::vector<RefusedFit> cases = {
+        {random_hsh_fit(LinearModel::PtmRgb, 2, 2, rng), "the fit's model is ptm-rgb; an HSH .rti holds hsh2 or hsh3"},
+        {with_channels(random_hsh_fit(LinearModel::Hsh3, 2, 2, rng), 2),
+         "the fit has 2 channel(s); an HSH .rti holds 3 (RGB)"},
+        {as_scene_linear(random_hsh_fit(LinearModel::Hsh2, 2, 2, rng)),
+         "the fit is of scene-linear values; an .rti holds display-encoded ones"},
+        {with_coefficient(random_hsh_fit(LinearModel::Hsh2, 2, 2, rng), 2 * 12 + 5, INFINITY),
+         "texel (0, 1) has a non-finite coefficient"},
     };
-    std::vector<Case> cases;
-    cases.push_back(
-        {random_hsh_fit(LinearModel::PtmRgb, 2, 2, rng), "the fit's model is ptm-rgb; an HSH .rti holds hsh2 or hsh3"});
-    LinearFit two = random_hsh_fit(LinearModel::Hsh3, 2, 2, rng);
-    two.channels = 2;
-    two.coefficients.resize(two.texels() * two.stride());
-    cases.push_back({two, "the fit has 2 channel(s); an HSH .rti holds 3 (RGB)"});
-    LinearFit linear = random_hsh_fit(LinearModel::Hsh2, 2, 2, rng);
-    linear.encoding = StackEncoding::SceneLinear;
-    cases.push_back({linear, "the fit is of scene-linear values; an .rti holds display-encoded ones"});
-    LinearFit inf = random_hsh_fit(LinearModel::Hsh2, 2, 2, rng);
-    inf.coefficients[2 * 12 + 5] = INFINITY;
-    cases.push_back({inf, "texel (0, 1) has a non-finite coefficient"});
-    for (const Case& c : cases) {
-        CAPTURE(c.message);
-        auto written = write_rti(path, c.fit);
-        REQUIRE_FALSE(written);
-        CHECK(written.error().kind == ErrorKind::BadInput);
-        CHECK(written.error().message.find("cannot write '" + path + "' as .rti: " + c.message) != std::string::npos);
-        CHECK_FALSE(std::filesystem::exists(path));
-    }
+    check_fits_refused([](const std::string& path, const LinearFit& fit) { return write_rti(path, fit); },
+                       scratch("refused.rti"), ".rti", cases);
 }
