@@ -10,6 +10,7 @@
 #pragma once
 
 #include "cmfilter/color/color_config.h"
+#include "cmfilter/math/vec3.h"
 #include "cmfilter/util/error.h"
 
 #include <CLI/CLI.hpp>
@@ -62,6 +63,9 @@ Expected<std::pair<double, double>> parse_range(const std::string& option, const
 // Splits "WxH" into two integers in 1..65536; names the option and the text on failure.
 Expected<std::pair<int, int>> parse_size(const std::string& option, const std::string& text);
 
+// "x,y,z": a direction, normalised; BadInput naming the option unless three
+// finite numbers, nonzero, with z >= 0 (at or above the horizon).
+Expected<Vec3> parse_direction(const std::string& option, const std::string& text);
 // --probes (render, bench): BadInput unless 1 <= probes <= 64.
 Status check_probes(int probes);
 

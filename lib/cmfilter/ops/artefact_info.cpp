@@ -8,6 +8,7 @@
 #include "cmfilter/texture/moment_pyramid_info.h"
 #include "cmfilter/noise/noise_image.h"
 #include "cmfilter/noise/noise_sigma_table_file.h"
+#include "cmfilter/ops/stack_info.h"
 
 #include <OpenImageIO/imageio.h>
 
@@ -50,6 +51,7 @@ std::string describe_kind(const std::string& kind, int width, int height)
                "steps of cmfilter:lod_step; channels box_sigma, gaussian_sigma (unresolved standard "
                "deviation inside a box of width w = base_period 2^LOD / a Gaussian of standard deviation "
                "w/2) and box_ci, gaussian_ci (95% confidence half-widths)";
+    if (kind == "linear-fit") return describe_linear_fit(width, height);
     return "cmfilter artefact of an unknown kind (made by a newer cmfilter?)";
 }
 
@@ -69,6 +71,8 @@ std::string format_value(const OIIO::ParamValue& p)
 
 Expected<ArtefactInfo> read_artefact_info(const std::string& path)
 {
+    // Stacks, BTF manifests and .ptm/.rti fits are not single EXRs.
+    if (auto stack = read_stack_file_info(path)) return std::move(*stack);
     // read_image gives the Io/BadInput distinction for missing and non-image files.
     auto in = OIIO::ImageInput::open(path);
     if (!in) {

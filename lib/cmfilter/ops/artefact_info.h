@@ -3,6 +3,7 @@
 // cmfilter:* parameter it was baked with, read from any file OpenImageIO opens.
 #pragma once
 
+#include "cmfilter/ops/artefact_description.h"
 #include "cmfilter/util/error.h"
 
 #include <string>
@@ -10,15 +11,6 @@
 #include <vector>
 
 namespace cmfilter {
-
-struct ArtefactInfo {
-    std::string path;
-    std::string kind;
-    std::string description;
-    std::string format;  // OpenImageIO format name
-    int width = 0, height = 0, channels = 0;
-    std::vector<std::pair<std::string, std::string>> parameters;  // without the "cmfilter:" prefix
-};
 
 // BadInput when the file is an image but carries no cmfilter:kind.
 Expected<ArtefactInfo> read_artefact_info(const std::string& path);

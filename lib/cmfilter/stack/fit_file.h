@@ -16,7 +16,7 @@
 namespace cmfilter {
 
 struct FitFileInfo {
-    std::string source;  // the light file it was fitted to (may be empty)
+    std::string source;                                      // the light file it was fitted to (may be empty)
     std::vector<std::pair<std::string, std::string>> extra;  // further cmfilter:* text attributes
 };
 

@@ -24,7 +24,7 @@ enum class LinearModel { PtmRgb, PtmLrgb, Hsh2, Hsh3 };
 
 constexpr int kMaxLinearTerms = 9;
 
-const char* to_string(LinearModel model);                         // "ptm-rgb", "ptm-lrgb", "hsh2", "hsh3"
+const char* to_string(LinearModel model);                                // "ptm-rgb", "ptm-lrgb", "hsh2", "hsh3"
 std::optional<LinearModel> parse_linear_model(const std::string& name);  // the same names
 
 // Basis functions per channel (6, 6, 4, 9).

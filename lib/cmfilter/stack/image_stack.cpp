@@ -1,0 +1,142 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "cmfilter/stack/image_stack.h"
+
+#include "cmfilter/io/image_colorspace.h"
+#include "cmfilter/io/image_reading.h"
+#include "cmfilter/util/parallel_for.h"
+
+#include <cmath>
+#include <mutex>
+#include <optional>
+#include <sstream>
+
+namespace cmfilter {
+
+const char* to_string(StackEncoding encoding)
+{
+    return encoding == StackEncoding::SceneLinear ? "scene-linear" : "display-encoded";
+}
+
+namespace {
+
+struct LoadedImage {
+    ImageData data;
+    ImageColorSpace space;
+};
+
+// The colour channels of an image (the first three, or the one grey
+// channel) converted with `convert` (a function on interleaved RGB).
+template <typename Convert>
+Status convert_color_channels(ImageData& img, Convert&& convert)
+{
+    const std::size_t texels = static_cast<std::size_t>(img.width) * img.height;
+    const int colour = img.channels >= 3 ? 3 : 1;
+    std::vector<float> rgb(texels * 3);
+    for (std::size_t t = 0; t < texels; ++t)
+        for (int c = 0; c < 3; ++c) rgb[3 * t + c] = img.pixels[t * img.channels + (colour == 3 ? c : 0)];
+    if (auto st = convert(rgb); !st) return st;
+    for (std::size_t t = 0; t < texels; ++t)
+        for (int c = 0; c < colour; ++c) img.pixels[t * img.channels + c] = rgb[3 * t + c];
+    return ok();
+}
+
+Expected<LoadedImage> load_one(const std::string& path, const StackLoadOptions& options, const ColorConfig& config)
+{
+    auto image = read_image(path);
+    if (!image) return image.error();
+    LoadedImage out{std::move(*image), {}};
+    ImageData& img = out.data;
+    for (std::size_t i = 0; i < img.pixels.size(); ++i)
+        if (!std::isfinite(img.pixels[i])) {
+            const std::size_t texel = i / img.channels;
+            std::ostringstream msg;
+            msg << "stack image '" << path << "' has a non-finite value at (" << texel % img.width << ", "
+                << texel / img.width << ") channel " << i % img.channels << "; expected finite values";
+            return bad_input(msg.str());
+        }
+    auto space = decide_image_colorspace(img, path, options.colorspace, "StackLoadOptions::colorspace", config);
+    if (!space) return space.error();
+    out.space = *space;
+    if (config.is_data(space->colorspace)) return out;
+    if (auto st = convert_color_channels(
+            img, [&](std::vector<float>& rgb) { return image_rgb_to_scene_linear(rgb, *space, config); });
+        !st)
+        return st.error();
+    if (options.encoding == StackEncoding::DisplayEncoded) {
+        auto srgb = config.resolve("sRGB");
+        if (!srgb) return srgb.error();
+        if (auto st = convert_color_channels(
+                img, [&](std::vector<float>& rgb) { return config.from_scene_linear(rgb, *srgb); });
+            !st)
+            return st.error();
+    }
+    return out;
+}
+
+}  // namespace
+
+Expected<ImageStack> load_image_stack(const StackLoadOptions& options, const ColorConfig& config)
+{
+    auto lights = read_light_file(options.light_file);
+    if (!lights) return lights.error();
+    const LightFile& lp = *lights;
+    const int n = static_cast<int>(lp.lights.size());
+    if (n < kMinStackLights)
+        return bad_input("light file '" + lp.path + "' has " + std::to_string(n) + " light" + (n == 1 ? "" : "s") +
+                         "; a stack needs at least " + std::to_string(kMinStackLights) +
+                         " (a PTM has 6 coefficients per channel)");
+
+    ImageStack stack;
+    stack.light_file = lp.path;
+    stack.encoding = options.encoding;
+    for (int k = 0; k < n; ++k) {
+        stack.lights.push_back(lp.lights[k].direction);
+        stack.images.push_back(lp.image_path(k));
+    }
+
+    // The first image fixes the size and channels; the rest are read in
+    // parallel into their slots and checked against it.
+    auto first = load_one(stack.images[0], options, config);
+    if (!first) return first.error();
+    stack.width = first->data.width;
+    stack.height = first->data.height;
+    stack.channels = first->data.channels;
+    stack.colorspace = options.encoding == StackEncoding::SceneLinear && !config.is_data(first->space.colorspace)
+                           ? config.scene_linear_name()
+                           : first->space.colorspace;
+    const std::size_t per_image = stack.texels() * stack.channels;
+    stack.pixels.resize(per_image * n);
+    std::copy(first->data.pixels.begin(), first->data.pixels.end(), stack.pixels.begin());
+
+    std::mutex mutex;
+    std::optional<std::pair<int, Error>> failure;  // the first failing image, by index
+    auto fail = [&](int k, Error e) {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (!failure || k < failure->first) failure.emplace(k, std::move(e));
+    };
+    parallel_for(n - 1, options.threads, [&](int i) {
+        const int k = i + 1;
+        auto img = load_one(stack.images[k], options, config);
+        if (!img) return fail(k, img.error());
+        const ImageData& d = img->data;
+        if (d.width != stack.width || d.height != stack.height) {
+            std::ostringstream msg;
+            msg << "stack image '" << stack.images[k] << "' is " << d.width << "x" << d.height << " but '"
+                << stack.images[0] << "' is " << stack.width << "x" << stack.height
+                << "; every image of a stack must have the same size";
+            return fail(k, bad_input(msg.str()));
+        }
+        if (d.channels != stack.channels) {
+            std::ostringstream msg;
+            msg << "stack image '" << stack.images[k] << "' has " << d.channels << " channel"
+                << (d.channels == 1 ? "" : "s") << " but '" << stack.images[0] << "' has " << stack.channels
+                << "; every image of a stack must have the same channels";
+            return fail(k, bad_input(msg.str()));
+        }
+        std::copy(d.pixels.begin(), d.pixels.end(), stack.image(k));
+    });
+    if (failure) return failure->second;
+    return stack;
+}
+
+}  // namespace cmfilter
