@@ -16,6 +16,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <sstream>
 #include <system_error>
@@ -41,6 +42,17 @@ std::string image_name(const std::string& stem, std::size_t k, std::size_t count
     std::string number = std::to_string(k);
     number.insert(0, digits - std::min(digits, number.size()), '0');
     return stem + "-" + number + extension;
+}
+
+// The direction as the light file writes it (9 significant digits).
+Vec3 as_written(const Vec3& d)
+{
+    const auto round = [](double v) {
+        char text[40];
+        std::snprintf(text, sizeof text, "%.9g", v);
+        return std::strtod(text, nullptr);
+    };
+    return {round(d.x), round(d.y), round(d.z)};
 }
 
 Status check_views(const std::vector<Vec3>& views)
@@ -71,8 +83,9 @@ struct Slot {
 
 // Writes one view slot's files, its .lp last.
 Status write_slot(const Slot& slot, std::size_t index, std::size_t slots, const SyntheticStack& stack,
-                  const MakeStackOptions& options, const std::string& scene_path, const std::string& scene_digest,
-                  const SyntheticSurface& surface, const ColorConfig& config, MadeStack& made)
+                  const std::vector<Vec3>& written, const MakeStackOptions& options, const std::string& scene_path,
+                  const std::string& scene_digest, const SyntheticSurface& surface, const ColorConfig& config,
+                  MadeStack& made)
 {
     const fs::path folder = slot.light_file.parent_path();
     const std::string stem = slot.light_file.stem().string();
@@ -95,7 +108,7 @@ Status write_slot(const Slot& slot, std::size_t index, std::size_t slots, const 
             !st)
             return st;
         ++made.files;
-        entries.push_back({name, l, 0});
+        entries.push_back({name, written[k], 0});
     }
     ImageAttributes na;
     na.text = {{"cmfilter:kind", "synthetic-normals"},
@@ -237,6 +250,13 @@ Expected<MadeStack> make_stack(const MakeStackOptions& options, const ColorConfi
     made.lights = static_cast<int>(lights->size());
     made.size = options.size;
     made.samples = options.samples;
+    // Rendered under the lights as the .lp holds them, so that a reader's
+    // directions are those of the images.
+    std::vector<Vec3> written;
+    for (Vec3& l : *lights) {
+        written.push_back(as_written(l));
+        l = normalize(written.back());
+    }
     std::vector<BtfView> btf;
     for (std::size_t k = 0; k < slots.size(); ++k) {
         so.view = slots[k].view;
@@ -251,8 +271,8 @@ Expected<MadeStack> make_stack(const MakeStackOptions& options, const ColorConfi
             fs::create_directories(folder, ec);
             if (ec) return io_error(folder.string() + ": cannot make the view slot's folder: " + ec.message());
         }
-        if (auto st =
-                write_slot(slots[k], k, slots.size(), *stack, options, scene_path, *digest, *surface, config, made);
+        if (auto st = write_slot(slots[k], k, slots.size(), *stack, written, options, scene_path, *digest, *surface,
+                                 config, made);
             !st)
             return st.error();
         btf.push_back({slots[k].relative, slots[k].view});
