@@ -108,12 +108,12 @@ Status run(const FitArgs& args)
     const double fit_seconds = fit_clock.elapsed_ms() / 1000;
 
     PtmQuantisation quantisation;
-    double rti_error = 0;
+    RtiQuantisation rti_quantisation;
     FitFileInfo info;
     info.source = args.stack;
     Status written = ok();
     if (format == FitFileFormat::Ptm) written = write_ptm(args.output, *fit, &quantisation);
-    else if (format == FitFileFormat::Rti) written = write_rti(args.output, *fit, &rti_error);
+    else if (format == FitFileFormat::Rti) written = write_rti(args.output, *fit, &rti_quantisation);
     else written = write_fit_exr(args.output, *fit, info);
     if (!written) return written;
     const double total_seconds = clock.elapsed_ms() / 1000;
@@ -153,7 +153,7 @@ Status run(const FitArgs& args)
                              {"smallest_singular", cond.smallest_singular},
                              {"clamped", cond.clamped}};
         if (format == FitFileFormat::Ptm) j["quantisation_max_value_error"] = quantisation.max_value_error;
-        if (format == FitFileFormat::Rti) j["quantisation_max_value_error"] = rti_error;
+        if (format == FitFileFormat::Rti) j["quantisation_max_value_error"] = rti_quantisation.max_value_error;
         j["training_error"] = error_json(*training);
         if (held) j["held_out_error"] = error_json(*held);
         std::cout << j.dump(2) << "\n";
@@ -166,7 +166,7 @@ Status run(const FitArgs& args)
                   << "  read " << read_seconds << " s, fit " << fit_seconds << " s, total " << total_seconds << " s\n";
         if (format == FitFileFormat::Ptm || format == FitFileFormat::Rti)
             std::cout << "  quantisation: relit values within "
-                      << (format == FitFileFormat::Ptm ? quantisation.max_value_error : rti_error) * 255
+                      << (format == FitFileFormat::Ptm ? quantisation.max_value_error : rti_quantisation.max_value_error) * 255
                       << " display codes of the unquantised fit\n";
         print_error("training lights", *training);
         if (held) print_error("held-out lights", *held);
