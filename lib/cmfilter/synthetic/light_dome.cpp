@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <numeric>
+#include <sstream>
 
 namespace cmfilter {
 
@@ -118,6 +119,13 @@ std::vector<Vec3> stage_dome(int count, double min_elevation)
     return lights;
 }
 
+std::string number_text(double v)
+{
+    std::ostringstream s;
+    s << v;
+    return s.str();
+}
+
 Error bad_dome(const std::string& text, const std::string& why)
 {
     return bad_input("dome '" + text + "' " + why +
@@ -182,7 +190,7 @@ Expected<std::vector<Vec3>> make_dome(const DomeOptions& options)
     const double e = options.min_elevation_degrees;
     const bool fibonacci = options.kind == DomeKind::Fibonacci;
     if (!(std::isfinite(e) && e >= 0 && (fibonacci ? e < 90 : e <= 80)))
-        return bad_input("DomeOptions::min_elevation_degrees " + std::to_string(e) + " is invalid: expected 0 <= e " +
+        return bad_input("DomeOptions::min_elevation_degrees " + number_text(e) + " is invalid: expected 0 <= e " +
                              (fibonacci ? "< 90" : "<= 80") + " degrees for a " + to_string(options.kind) + " dome",
                          "DomeOptions::min_elevation_degrees");
     switch (options.kind) {

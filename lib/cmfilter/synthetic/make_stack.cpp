@@ -5,7 +5,6 @@
 #include "cmfilter/stack/btf_manifest.h"
 #include "cmfilter/stack/image_stack.h"
 #include "cmfilter/stack/light_file.h"
-#include "cmfilter/synthetic/stack_record.h"
 #include "cmfilter/synthetic/synthetic_stack.h"
 #include "cmfilter/util/atomic_output.h"
 #include "cmfilter/util/sha256.h"
@@ -18,6 +17,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <system_error>
 
@@ -42,6 +42,19 @@ std::string image_name(const std::string& stem, std::size_t k, std::size_t count
     std::string number = std::to_string(k);
     number.insert(0, digits - std::min(digits, number.size()), '0');
     return stem + "-" + number + extension;
+}
+
+// The record (stack_record.h), written atomically.
+Status write_stack_record(const std::string& path, const nlohmann::json& record)
+{
+    auto out = AtomicOutput::begin(path);
+    if (!out) return out.error();
+    {
+        std::ofstream f(out->temp_path());
+        f << record.dump(2) << "\n";
+        if (!f) return io_error(path + ": cannot write the stack record");
+    }
+    return out->commit();
 }
 
 // The direction as the light file writes it (9 significant digits).
@@ -69,7 +82,7 @@ Status check_views(const std::vector<Vec3>& views)
                              "MakeStackOptions::views");
         if (!(v.z > 0))
             return bad_input("MakeStackOptions::views" + which + " " + vector_text(v) +
-                                 " is below the horizon: expected z > 0 (the camera sees the surface from above)",
+                                 " is not above the horizon: expected z > 0 (the camera sees the surface from above)",
                              "MakeStackOptions::views");
     }
     return ok();
@@ -186,11 +199,10 @@ Expected<MadeStack> make_stack(const MakeStackOptions& options, const ColorConfi
     if (auto st = check_views(options.views); !st) return st.error();
     const bool several = options.views.size() > 1;
     if (auto st = check_output_path(options.output, several ? ".json" : ".lp"); !st)
-        return prefixed("MakeStackOptions::output: ",
-                        Error{st.error().kind,
-                              st.error().message + (several ? " (several views: the BTF manifest, .json)"
-                                                            : " (one view: the light file, .lp)"),
-                              "MakeStackOptions::output"});
+        return Error{st.error().kind,
+                     st.error().message + (several ? " (several views: the BTF manifest, .json)"
+                                                   : " (one view: the stack's light file, .lp)"),
+                     "MakeStackOptions::output"};
     if (options.image_extension != ".exr" && options.image_extension != ".png")
         return bad_input("MakeStackOptions::image_extension '" + options.image_extension +
                              "' is invalid: expected .exr (scene-linear float) or .png (8-bit sRGB)",

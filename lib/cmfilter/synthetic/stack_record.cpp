@@ -3,7 +3,6 @@
 
 #include "cmfilter/io/json_document.h"
 #include "cmfilter/io/json_reading.h"
-#include "cmfilter/util/atomic_output.h"
 #include "cmfilter/util/sha256.h"
 
 #include <cmath>
@@ -41,18 +40,6 @@ Expected<std::string> read_string(const JsonValue& object, const std::string& ke
 }
 
 }  // namespace
-
-Status write_stack_record(const std::string& path, const nlohmann::json& record)
-{
-    auto out = AtomicOutput::begin(path);
-    if (!out) return out.error();
-    {
-        std::ofstream f(out->temp_path());
-        f << record.dump(2) << "\n";
-        if (!f) return io_error(path + ": cannot write the stack record");
-    }
-    return out->commit();
-}
 
 Expected<MakeStackOptions> read_stack_record(const std::string& path)
 {

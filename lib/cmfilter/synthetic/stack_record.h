@@ -18,19 +18,15 @@
 //    "frame": "...", "shading": "...",     words, for a reader
 //    "rays": N, "hits": N, "render_seconds": s}
 // Paths other than the scene's are relative to the record's folder.
+// make_stack writes it; this file reads it back.
 #pragma once
 
 #include "cmfilter/synthetic/make_stack.h"
 #include "cmfilter/util/error.h"
 
-#include <nlohmann/json.hpp>
-
 #include <string>
 
 namespace cmfilter {
-
-// Writes `record` atomically.
-Status write_stack_record(const std::string& path, const nlohmann::json& record);
 
 // The options the record's stack was made with: scene, surface, its one
 // view, size, samples, seed, specular lobe, image extension, albedo (the
