@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // `cmfilter make-stack`: a synthetic image stack with exact ground truth
-// (docs/stacks.md#synthetic-stacks). A scene surface's tile
+// (docs/make-stack.md). A scene surface's tile
 // (synthetic_surface.h) rendered under each light of a dome (light_dome.h)
 // from one view, or from several (a BTF), by render_synthetic_stack
 // (synthetic_stack.h), and written as a stack that load_image_stack reads.
