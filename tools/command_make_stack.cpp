@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // cmfilter make-stack: a synthetic image stack with exact ground truth
-// (make_stack.h, docs/stacks.md#synthetic-stacks): one tile of a scene's
+// (make_stack.h, docs/make-stack.md): one tile of a scene's
 // microsurface or displacement, ray traced under each light of a dome, from
 // one view (a stack: -o stack.lp) or several (a BTF: -o btf.json); with
 // --from, the surface of an earlier stack's record rendered again under
