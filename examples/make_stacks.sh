@@ -5,7 +5,7 @@
 #   near-diffuse/stack.lp   a gentle Gaussian microsurface coloured by height
 #                           (sand-snow), Lambertian facets, Fibonacci 64
 #                           lights, 64 x 64;
-#   shiny/stack.lp          a strong relief (slope sigma about 1) coloured by
+#   shiny/stack.lp          a strong relief (slope sigma about 0.8) coloured by
 #                           height and slope, a GGX coat (F0 0.04, alpha
 #                           0.15), hard shadows, Fibonacci 64 lights, 64 x 64,
 #                           with its albedo;
