@@ -166,7 +166,9 @@ Status run(const FitArgs& args)
                   << "  read " << read_seconds << " s, fit " << fit_seconds << " s, total " << total_seconds << " s\n";
         if (format == FitFileFormat::Ptm || format == FitFileFormat::Rti)
             std::cout << "  quantisation: relit values within "
-                      << (format == FitFileFormat::Ptm ? quantisation.max_value_error : rti_quantisation.max_value_error) * 255
+                      << (format == FitFileFormat::Ptm ? quantisation.max_value_error
+                                                       : rti_quantisation.max_value_error) *
+                             255
                       << " display codes of the unquantised fit\n";
         print_error("training lights", *training);
         if (held) print_error("held-out lights", *held);
