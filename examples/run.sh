@@ -17,7 +17,12 @@
 #     gaussian-exact and the ray-traced reference, with each one's error;
 #  5. render the slope-coloured scene (grass on the flat, rock on the steep),
 #     the combined one (base + height + slope) and the snake (a textured
-#     displacement) by gaussian.
+#     displacement) by gaussian;
+#  6. make the bundled synthetic image stacks (examples/make_stacks.sh), fit
+#     the near-diffuse and the shiny one with a PTM and HSH of order 3 (to
+#     cmfilter's EXR and to the .ptm / .rti RTI viewers open), relight each
+#     at a light none of them was made under, and measure the fits against
+#     the exact images there and their normals against the true ones.
 #   bash examples/run.sh CMFILTER_BINARY OUTPUT_DIR
 set -euo pipefail
 cmfilter=${1:?usage: run.sh CMFILTER_BINARY OUTPUT_DIR}
@@ -84,6 +89,24 @@ for scene in plane-microsurface-grass-rock plane-microsurface-combined plane-sna
   oiiotool "$out/render/$scene.exr" --colorconvert linear sRGB -d uint8 -o "$out/render/$scene.png"
 done
 echo
+echo "image stacks (docs/stacks.md): error at held-out lights, normals against the true ones"
+bash "$root/examples/make_stacks.sh" "$cmfilter" "$out/stacks" 2>/dev/null >/dev/null
+mkdir -p "$out/stacks/near-diffuse-held"
+"$cmfilter" make-stack --from "$out/stacks/near-diffuse/stack.json" --dome regular:16 --min-elevation 20 \
+  -o "$out/stacks/near-diffuse-held/stack.lp" -q
+for stack in near-diffuse shiny; do
+  for fit in ptm-rgb.ptm hsh3.rti hsh3.exr; do
+    file="$out/stacks/$stack-$fit"
+    "$cmfilter" fit "$out/stacks/$stack/stack.lp" --model "${fit%.*}" -o "$file" -q
+    "$cmfilter" relight "$file" --light -0.3,0.5,0.81 -o "$out/stacks/$stack-${fit/./-}-relit.png" -q
+    "$cmfilter" relight "$file" --reference "$out/stacks/$stack-held/stack.lp" \
+      | awk -v s="$stack" -v f="$fit" '/CIEDE2000/ { printf "  %-13s %-12s held-out dE00 mean %6.2f", s, f, $3 }'
+    "$cmfilter" normals "$file" --reference "$out/stacks/$stack/stack.normals.exr" \
+      | awk '/angle to/ { printf "   normals %5.1f degrees\n", $5 }'
+  done
+done
+
+echo
 echo "example outputs in $out:"
 echo "  tables/*.exr      prefiltered colour-map tables (open with oiiotool --info -v or cmfilter info)"
 echo "  tables/*.txt      what cmfilter info says of each"
@@ -95,3 +118,4 @@ echo "  render/bench.csv  every method's time and error against the reference (d
 echo "  render/sand-snow-*.png  the microsurface scene by naive, gaussian-exact and reference (docs/microsurface.md)"
 echo "  render/plane-microsurface-grass-rock.png, plane-microsurface-combined.png, plane-snake.png"
 echo "                    colour by slope, combined layers and the snake, by gaussian (docs/microsurface.md)"
+echo "  stacks/           synthetic image stacks (docs/make-stack.md), their fits (.exr, .ptm, .rti) and relit PNGs"

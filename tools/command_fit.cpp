@@ -37,6 +37,7 @@ struct FitArgs {
     double singular_threshold = 1e-6;
     std::string ocio_config;
     int threads = 0;
+    bool no_error = false;
     bool json = false;
     bool quiet = false;
 };
@@ -121,11 +122,14 @@ Status run(const FitArgs& args)
 
     // The written file's own relighting error: at the training lights, and
     // at the held-out lights when given.
+    std::optional<RelightError> training, held;
     auto stored = load_fit(args.output);
     if (!stored) return prefixed("reading back '" + args.output + "': ", stored.error());
-    auto training = relight_error(*stored, *stack, *config, args.threads);
-    if (!training) return training.error();
-    std::optional<RelightError> held;
+    if (!args.no_error) {
+        auto e = relight_error(*stored, *stack, *config, args.threads);
+        if (!e) return e.error();
+        training = *e;
+    }
     if (!args.held_out.empty()) {
         StackLoadOptions h = load;
         h.light_file = args.held_out;
@@ -154,7 +158,7 @@ Status run(const FitArgs& args)
                              {"clamped", cond.clamped}};
         if (format == FitFileFormat::Ptm) j["quantisation_max_value_error"] = quantisation.max_value_error;
         if (format == FitFileFormat::Rti) j["quantisation_max_value_error"] = rti_quantisation.max_value_error;
-        j["training_error"] = error_json(*training);
+        if (training) j["training_error"] = error_json(*training);
         if (held) j["held_out_error"] = error_json(*held);
         std::cout << j.dump(2) << "\n";
     } else if (!args.quiet) {
@@ -170,7 +174,7 @@ Status run(const FitArgs& args)
                                                        : rti_quantisation.max_value_error) *
                              255
                       << " display codes of the unquantised fit\n";
-        print_error("training lights", *training);
+        if (training) print_error("training lights", *training);
         if (held) print_error("held-out lights", *held);
     }
     return ok();
@@ -194,6 +198,8 @@ Command setup_fit(CLI::App& parent)
                     "Colour space of the stack's integer images (default: each file's metadata, else sRGB)");
     app->add_option("--held-out", args->held_out,
                     "A stack of further lights (.lp) to report the fit's error at, such as make-stack renders");
+    app->add_flag("--no-error", args->no_error,
+                  "Skip the error at the training lights (relighting every light costs several times the fit)");
     app->add_option("--singular-threshold", args->singular_threshold,
                     "Singular values of the light matrix below this fraction of the largest are taken as zero")
         ->capture_default_str();
