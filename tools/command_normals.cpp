@@ -73,8 +73,9 @@ Status run(const NormalsArgs& args)
         std::cout << j.dump(2) << "\n";
     } else if (!args.quiet) {
         if (!args.output.empty()) std::cout << "wrote " << args.output << ": normals of " << args.fit << "\n";
-        std::cout << "  " << normals.degenerate << " of " << texels
-                  << " texels without an interior maximum (found by a search over the hemisphere)\n";
+        std::cout
+            << "  " << normals.degenerate << " of " << texels
+            << " texels without an interior maximum (their brightest direction is on the horizon, or the fit is flat)\n";
         if (error)
             std::cout << "  angle to " << args.reference << ": mean " << error->mean << " degrees, p95 " << error->p95
                       << ", max " << error->max << "\n";
