@@ -50,3 +50,21 @@ cmfilter_cli_case(NAME bad.normals-nothing EXIT 3 STDERR "normals needs -o" COMM
 cmfilter_cli_case(NAME bad.normals-extension EXIT 3 STDERR "\\.exr" ABSENT ${OUT}/normals-bad.png
                   COMMAND ${CMF} normals ${OUT}/fit-good-ptm-rgb.exr -o ${OUT}/normals-bad.png)
 set_tests_properties(cli.bad.normals-nothing cli.bad.normals-extension PROPERTIES FIXTURES_REQUIRED "cli_dirs;fit_good_ptm-rgb")
+
+# .ptm and .rti files that are cut short or of a kind not supported are
+# refused by every command that reads a fit.
+add_test(NAME cli.relight.setup-bad-files
+         COMMAND bash -c "set -e; head -c 600 $0/fit-good.ptm > $0/fit-truncated.ptm; head -c 300 $0/fit-good.rti > $0/fit-truncated.rti
+printf 'PTM_1.2\\nPTM_FORMAT_JPEG_RGB\\n8\\n8\\n' > $0/fit-jpeg.ptm" ${OUT})
+set_tests_properties(cli.relight.setup-bad-files PROPERTIES FIXTURES_REQUIRED "cli_dirs;fit_good_ptm;fit_good_rti"
+                     FIXTURES_SETUP bad_fit_files LABELS cli)
+cmfilter_cli_case(NAME bad.relight-truncated-ptm EXIT 3 STDERR "fit-truncated\\.ptm' is truncated: expected [0-9]+ bytes"
+                  ABSENT ${OUT}/relit-bad.png
+                  COMMAND ${CMF} relight ${OUT}/fit-truncated.ptm --light 0,0,1 -o ${OUT}/relit-bad.png)
+cmfilter_cli_case(NAME bad.normals-truncated-rti EXIT 3 STDERR "fit-truncated\\.rti' is truncated"
+                  ABSENT ${OUT}/normals-bad.exr
+                  COMMAND ${CMF} normals ${OUT}/fit-truncated.rti -o ${OUT}/normals-bad.exr)
+cmfilter_cli_case(NAME bad.info-jpeg-ptm EXIT 3 STDERR "PTM_FORMAT_JPEG_RGB, which cmfilter does not support"
+                  COMMAND ${CMF} info ${OUT}/fit-jpeg.ptm)
+set_tests_properties(cli.bad.relight-truncated-ptm cli.bad.normals-truncated-rti cli.bad.info-jpeg-ptm
+                     PROPERTIES FIXTURES_REQUIRED "cli_dirs;bad_fit_files")
