@@ -14,7 +14,6 @@ namespace cmfilter {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kRec709[3] = {0.2126, 0.7152, 0.0722};
 
 // A stationary point counts only when 4 a0 a1 - a2^2 exceeds this fraction
 // of a0^2 + a1^2 + a2^2 (else the determinant is taken as zero).
@@ -279,7 +278,7 @@ Coefficients luminance_coefficients(const LinearFit& fit, std::size_t t)
         return a;
     }
     for (int c = 0; c < 3; ++c)
-        for (int k = 0; k < terms; ++k) a[static_cast<std::size_t>(k)] += kRec709[c] * coef[c * terms + k];
+        for (int k = 0; k < terms; ++k) a[static_cast<std::size_t>(k)] += kRec709Luminance[c] * coef[c * terms + k];
     return a;
 }
 

@@ -16,9 +16,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Rec. 709 luminance weights of linear (or encoded) R, G, B.
-constexpr double kRec709[3] = {0.2126, 0.7152, 0.0722};
-
 // Projections (lu, lv) whose smaller singular value is below this fraction
 // of the larger lie on one line through the pole.
 constexpr double kCollinearTolerance = 1e-4;
@@ -76,7 +73,7 @@ Status check_singular_threshold(double threshold)
 // The luminance weights of a stack's channels (PtmLrgb: 1 or 3 channels).
 std::vector<double> luminance_weights(int channels)
 {
-    if (channels == 3) return {kRec709[0], kRec709[1], kRec709[2]};
+    if (channels == 3) return {kRec709Luminance[0], kRec709Luminance[1], kRec709Luminance[2]};
     return {1.0};
 }
 

@@ -24,6 +24,11 @@ enum class LinearModel { PtmRgb, PtmLrgb, Hsh2, Hsh3 };
 
 constexpr int kMaxLinearTerms = 9;
 
+// The luminance a PTM-LRGB fits and a normal maximises (linear_fit.h,
+// fit_normals.h): Rec. 709 weights of R, G, B (of linear or encoded values
+// alike, as RTI tools take them).
+constexpr double kRec709Luminance[3] = {0.2126, 0.7152, 0.0722};
+
 const char* to_string(LinearModel model);                                // "ptm-rgb", "ptm-lrgb", "hsh2", "hsh3"
 std::optional<LinearModel> parse_linear_model(const std::string& name);  // the same names
 

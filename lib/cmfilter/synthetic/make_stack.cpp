@@ -215,14 +215,7 @@ Expected<MadeStack> make_stack(const MakeStackOptions& options, const ColorConfi
     so.threads = options.threads;
     so.albedo = options.albedo;
     // The options' own checks before any loading (render_synthetic_stack repeats them).
-    if (options.size < 1 || options.size > kMaxSyntheticSize)
-        return bad_input("MakeStackOptions::size " + std::to_string(options.size) + " is invalid: expected 1 to " +
-                             std::to_string(kMaxSyntheticSize) + " pixels per side",
-                         "MakeStackOptions::size");
-    if (options.samples < 1 || options.samples > kMaxSyntheticSamples)
-        return bad_input("MakeStackOptions::samples " + std::to_string(options.samples) +
-                             " is invalid: expected 1 to " + std::to_string(kMaxSyntheticSamples) + " rays per pixel",
-                         "MakeStackOptions::samples");
+    if (auto st = check_synthetic_size(options.size, options.samples, "MakeStackOptions"); !st) return st.error();
     if (auto st = check_specular_lobe(options.specular); !st) return st.error();
     auto lights = make_dome(options.dome);
     if (!lights) return lights.error();

@@ -49,6 +49,19 @@ int strata_columns(int n)
 
 }  // namespace
 
+Status check_synthetic_size(int size, int samples, const std::string& owner)
+{
+    if (size < 1 || size > kMaxSyntheticSize)
+        return bad_input(owner + "::size " + std::to_string(size) + " is invalid: expected 1 to " +
+                             std::to_string(kMaxSyntheticSize) + " pixels per side",
+                         owner + "::size");
+    if (samples < 1 || samples > kMaxSyntheticSamples)
+        return bad_input(owner + "::samples " + std::to_string(samples) + " is invalid: expected 1 to " +
+                             std::to_string(kMaxSyntheticSamples) + " rays per pixel",
+                         owner + "::samples");
+    return ok();
+}
+
 Expected<SyntheticStack> render_synthetic_stack(const SyntheticSurface& surface, const std::vector<Vec3>& lights,
                                                 const SyntheticStackOptions& options)
 {
@@ -63,14 +76,7 @@ Expected<SyntheticStack> render_synthetic_stack(const SyntheticSurface& surface,
                              " is invalid: it is not above the horizon (expected z > 0: the camera sees the "
                              "surface from above)",
                          "SyntheticStackOptions::view");
-    if (options.size < 1 || options.size > kMaxSyntheticSize)
-        return bad_input("SyntheticStackOptions::size " + std::to_string(options.size) + " is invalid: expected 1 to " +
-                             std::to_string(kMaxSyntheticSize) + " pixels per side",
-                         "SyntheticStackOptions::size");
-    if (options.samples < 1 || options.samples > kMaxSyntheticSamples)
-        return bad_input("SyntheticStackOptions::samples " + std::to_string(options.samples) +
-                             " is invalid: expected 1 to " + std::to_string(kMaxSyntheticSamples) + " rays per pixel",
-                         "SyntheticStackOptions::samples");
+    if (auto st = check_synthetic_size(options.size, options.samples, "SyntheticStackOptions"); !st) return st.error();
     if (auto st = check_specular_lobe(options.specular); !st) return st.error();
     if (lights.empty()) return bad_input("render_synthetic_stack: no lights");
     SyntheticStack out;

@@ -37,6 +37,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace cmfilter {
@@ -71,6 +72,11 @@ struct SyntheticStack {
     std::size_t texels() const { return static_cast<std::size_t>(size) * size; }
     const float* image(std::size_t k) const { return pixels.data() + k * texels() * 3; }
 };
+
+// BadInput unless 1 <= size <= kMaxSyntheticSize and 1 <= samples <=
+// kMaxSyntheticSamples, naming the fields `owner`::size and ::samples (the
+// options struct they came from: "SyntheticStackOptions", "MakeStackOptions").
+Status check_synthetic_size(int size, int samples, const std::string& owner);
 
 // BadInput naming the field (SyntheticStackOptions::view, ::size, ::samples,
 // SpecularLobe's) or the light (its index and value): a zero or non-finite
