@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/synthetic/synthetic_surface.h"
 
+#include "cmfilter/render/surface_renderer.h"
+
 #include "cmfilter/microsurface/microsurface_albedo.h"
 #include "cmfilter/render/layered_surface.h"
 #include "cmfilter/scene/scene_loading.h"

@@ -29,7 +29,6 @@
 #include "cmfilter/color/color_config.h"
 #include "cmfilter/math/vec3.h"
 #include "cmfilter/microsurface/heightfield_tracer.h"
-#include "cmfilter/render/surface_renderer.h"
 #include "cmfilter/scene/material.h"
 #include "cmfilter/scene/scene.h"
 #include "cmfilter/util/error.h"
@@ -45,6 +44,8 @@ namespace cmfilter {
 // (x, y, z) -> (x, -y, z): the stack's frame to the heightfield's and back.
 inline Vec3 to_heightfield_frame(const Vec3& stack) { return {stack.x, -stack.y, stack.z}; }
 inline Vec3 to_stack_frame(const Vec3& heightfield) { return {heightfield.x, -heightfield.y, heightfield.z}; }
+
+class DriverRenderer;  // render/surface_renderer.h: the base layer's colour at a point
 
 enum class SyntheticSurfaceKind { Microsurface, Displacement };
 const char* to_string(SyntheticSurfaceKind kind);
