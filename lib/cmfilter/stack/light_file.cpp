@@ -3,10 +3,12 @@
 
 #include "cmfilter/util/atomic_output.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -61,8 +63,24 @@ std::string folder_of(const std::string& path)
 std::string LightFile::image_path(std::size_t k) const
 {
     const std::string& name = lights.at(k).image;
-    if (!name.empty() && name[0] == '/') return name;
-    return folder_of(path) + name;
+    const std::string folder = folder_of(path);
+    const std::string direct = !name.empty() && name[0] == '/' ? name : folder + name;
+    std::error_code ec;
+    if (std::filesystem::exists(direct, ec)) return direct;
+    // Written on another machine: Windows separators, or that machine's
+    // absolute paths. The same relative path with '/', then the file of the
+    // same name beside the .lp.
+    std::string slashed = name;
+    std::replace(slashed.begin(), slashed.end(), '\\', '/');
+    const bool windows_absolute = slashed.size() > 2 && slashed[1] == ':' && slashed[2] == '/';
+    if (slashed != name && !windows_absolute && slashed[0] != '/' && std::filesystem::exists(folder + slashed, ec))
+        return folder + slashed;
+    const std::size_t cut = slashed.find_last_of('/');
+    if (cut != std::string::npos && cut + 1 < slashed.size()) {
+        const std::string beside = folder + slashed.substr(cut + 1);
+        if (std::filesystem::exists(beside, ec)) return beside;
+    }
+    return direct;
 }
 
 Expected<LightFile> read_light_file(const std::string& path)

@@ -31,7 +31,12 @@ struct LightEntry {
 struct LightFile {
     std::string path;  // the .lp file read
     std::vector<LightEntry> lights;
-    // image resolved against the .lp file's folder (absolute names kept).
+    // image k's path: its name resolved against the .lp file's folder
+    // (absolute names kept). A light file written on another machine (RTI
+    // capture software records that machine's paths, often Windows ones:
+    // "C:\\capture\\jpeg\\img_01.jpg") still opens when its images lie
+    // beside it: a name that does not exist is tried with '\\' read as '/',
+    // then as the file of the same name in the .lp's folder.
     std::string image_path(std::size_t k) const;
 };
 

@@ -8,6 +8,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -84,4 +85,21 @@ TEST_CASE("light file: a missing file is an I/O error")
     auto f = read_light_file("/nonexistent/dir/x.lp");
     REQUIRE_FALSE(f);
     CHECK(f.error().kind == ErrorKind::Io);
+}
+
+TEST_CASE("light file: images named by another machine's paths are found beside the .lp")
+{
+    const std::string dir = cmfilter_test::temp_dir("cmfilter-light-file-moved");
+    std::filesystem::create_directories(dir + "/jpeg");
+    for (const char* f : {"/img_01.jpg", "/img_02.jpg", "/jpeg/img_03.jpg"}) std::ofstream(dir + f) << "x";
+    const std::string lp = dir + "/moved.lp";
+    std::ofstream(lp) << "4\nC:\\capture\\jpeg\\img_01.jpg 0 0 1\n/mnt/rig/session/img_02.jpg 0 0 1\n"
+                         "jpeg\\img_03.jpg 0 0 1\nC:\\capture\\gone.jpg 0 0 1\n";
+    auto f = read_light_file(lp);
+    REQUIRE(f);
+    CHECK(f->image_path(0) == dir + "/img_01.jpg");
+    CHECK(f->image_path(1) == dir + "/img_02.jpg");
+    CHECK(f->image_path(2) == dir + "/jpeg/img_03.jpg");
+    // Not found anywhere: the name as written, resolved, so the error names it.
+    CHECK(f->image_path(3) == dir + "/C:\\capture\\gone.jpg");
 }
