@@ -110,32 +110,49 @@ Expected<LightFile> read_light_file(const std::string& path)
             count_line = number;
             continue;
         }
-        if (fields.size() != 4)
+        // A name may hold spaces: the last three fields are the direction
+        // and the rest of the line before them the name, unless the field
+        // after the first is a number too (a line with a number too many).
+        double probe = 0;
+        if (fields.size() < 4 || (fields.size() > 4 && parse_number(fields[1], probe)))
             return at(number, "expected 'image x y z' (a file name and three numbers), got " +
                                   std::to_string(fields.size()) + " field" + (fields.size() == 1 ? "" : "s") + ": '" +
                                   line + "'");
+        const std::size_t first_number = fields.size() - 3;
         double v[3];
         for (int i = 0; i < 3; ++i) {
-            const std::string& f = fields[1 + i];
+            const std::string& f = fields[first_number + i];
             if (parse_number(f, v[i])) continue;
             if (looks_like_decimal_comma(f))
                 return at(number, "'" + f + "' has a decimal comma; expected a decimal point ('.')");
             return at(number, "'" + f + "' is not a number; expected 'image x y z'");
         }
+        std::string name = fields[0];
+        if (fields.size() > 4) {
+            // From the first field's start to the end of the last name field,
+            // the fields found in order along the line.
+            std::size_t cursor = 0, start = 0, end = 0;
+            for (std::size_t i = 0; i < first_number; ++i) {
+                const std::size_t at_field = line.find(fields[i], cursor);
+                if (i == 0) start = at_field;
+                cursor = end = at_field + fields[i].size();
+            }
+            name = line.substr(start, end - start);
+        }
         const Vec3 d{v[0], v[1], v[2]};
         if (!std::isfinite(d.x) || !std::isfinite(d.y) || !std::isfinite(d.z))
-            return at(number, "the light direction of '" + fields[0] + "' is not finite");
+            return at(number, "the light direction of '" + name + "' is not finite");
         const double len = length(d);
         if (!(len > 0) || !std::isfinite(len))
-            return at(number, "the light direction of '" + fields[0] + "' is zero; expected a direction");
+            return at(number, "the light direction of '" + name + "' is zero; expected a direction");
         const Vec3 unit = d / len;
         if (unit.z < 0) {
             std::ostringstream msg;
-            msg << "the light direction of '" << fields[0] << "' (" << d.x << ", " << d.y << ", " << d.z
+            msg << "the light direction of '" << name << "' (" << d.x << ", " << d.y << ", " << d.z
                 << ") is below the horizon (z < 0); expected z >= 0, towards the camera";
             return at(number, msg.str());
         }
-        file.lights.push_back({fields[0], unit, number});
+        file.lights.push_back({name, unit, number});
     }
     if (count < 0)
         return bad_input("light file '" + path + "' is empty; expected the number of lights, then one line per image");

@@ -9,8 +9,10 @@
 // (relative to the `.lp` file's folder, or absolute) and the light
 // direction towards the light, in the image's frame: x right, y up (towards
 // the image's top row), z towards the camera. Fields are separated by
-// spaces or tabs; blank lines and trailing whitespace are ignored; a name
-// holding spaces is not supported (as in the tools that write the format).
+// spaces or tabs; blank lines and trailing whitespace are ignored. A name
+// may hold spaces: the last three fields are the direction, the rest of the
+// line before them the name (unless its second field is a number: a line
+// with one number too many is malformed).
 // Directions are normalised on read.
 #pragma once
 

@@ -52,6 +52,16 @@ TEST_CASE("light file: names, normalised directions and paths relative to the fi
     CHECK(f->image_path(2) == "/abs/img_2.png");
 }
 
+TEST_CASE("light file: names may hold spaces; a line with a number too many is malformed")
+{
+    auto f = read_light_file(write_text("spaces.lp", "2\nmy img 0.5.png 0.5 0.5 0.7\nb c.png\t0 0 1\n"));
+    REQUIRE(f);
+    CHECK(f->lights[0].image == "my img 0.5.png");
+    CHECK(f->lights[0].direction.x == doctest::Approx(0.5 / std::sqrt(0.99)));
+    CHECK(f->lights[1].image == "b c.png");
+    CHECK(error_of("1\na.png 0.1 0.2 0.3 0.4\n").find("line 2: expected 'image x y z'") != std::string::npos);
+}
+
 TEST_CASE("light file: what format_light_file writes reads back")
 {
     std::vector<LightEntry> lights = {{"a.exr", {0.1, 0.2, std::sqrt(1 - 0.05)}, 0}, {"b.exr", {0, 0, 1}, 0}};
