@@ -77,3 +77,21 @@ foreach(t dome-fibonaci-64 dome-regular dome-stage-6-5 dome-file- dome-file-miss
           min-elevation surface output-extension format from-and-size no-scene)
   set_tests_properties(cli.make-stack.bad.${t} PROPERTIES FIXTURES_REQUIRED "cli_dirs;cli_fixtures;make_stack_dir")
 endforeach()
+
+# A run that fails after rendering leaves what was there before: the old,
+# complete stack (its .lp, images and record, untouched), and no staging
+# folder behind; the same for a BTF whose second slot's folder is a file.
+add_test(NAME cli.make-stack.failure-keeps-old-stack
+         COMMAND bash -c "set -u; d=$1/keep; rm -rf $d; mkdir -p $d/btf
+$0 make-stack $2 -o $d/stack.lp --size 8 --spp 1 --dome fibonacci:8 -q || exit 1
+before=$(sha256sum $d/stack.lp $d/stack-004.exr $d/stack.json)
+rm $d/stack-005.exr; mkdir $d/stack-005.exr
+$0 make-stack $2 -o $d/stack.lp --size 8 --spp 1 --dome regular:8 -q 2>/dev/null; test $? = 2 || exit 1
+test \"$(sha256sum $d/stack.lp $d/stack-004.exr $d/stack.json)\" = \"$before\" || { echo 'old stack changed'; exit 1; }
+touch $d/btf/view-01
+$0 make-stack $2 -o $d/btf/btf.json --size 8 --spp 1 --dome fibonacci:8 --view 0,0,1 --view 0.5,0,0.866 -q 2>/dev/null; test $? = 2 || exit 1
+test ! -e $d/btf/btf.json -a ! -e $d/btf/view-00 || { echo 'partial BTF left'; exit 1; }
+if ls -a $d $d/btf | grep -q '\\.tmp-'; then echo 'staging folder left'; exit 1; fi"
+                 ${CMF} ${OUT} ${EX}/stack-near-diffuse.json)
+set_tests_properties(cli.make-stack.failure-keeps-old-stack PROPERTIES FIXTURES_REQUIRED cli_dirs LABELS cli
+                     ENVIRONMENT "OCIO=")

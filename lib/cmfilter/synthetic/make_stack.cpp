@@ -13,11 +13,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <sstream>
 #include <system_error>
 
@@ -52,6 +54,7 @@ Status write_stack_record(const std::string& path, const nlohmann::json& record)
     {
         std::ofstream f(out->temp_path());
         f << record.dump(2) << "\n";
+        f.close();
         if (!f) return io_error(path + ": cannot write the stack record");
     }
     return out->commit();
@@ -87,6 +90,82 @@ Status check_views(const std::vector<Vec3>& views)
     }
     return ok();
 }
+
+// A folder beside the output that every file of a run is written into
+// first (".<stem>.tmp-<random>", as AtomicOutput names its temporary files),
+// removed with what it holds unless its files were moved into place.
+class StagingFolder {
+public:
+    static Expected<StagingFolder> create(const fs::path& output)
+    {
+        fs::path dir = output.parent_path();
+        if (dir.empty()) dir = ".";
+        std::random_device entropy;
+        std::ostringstream name;
+        name << "." << output.stem().string() << ".tmp-" << std::hex << entropy() << entropy();
+        StagingFolder staging;
+        staging.path_ = dir / name.str();
+        std::error_code ec;
+        if (!fs::create_directory(staging.path_, ec) || ec)
+            return io_error("cannot write '" + output.string() + "': cannot make the folder '" +
+                            staging.path_.string() + "' to write it in: " + ec.message());
+        return staging;
+    }
+    StagingFolder(StagingFolder&& o) noexcept : path_(std::move(o.path_)) { o.path_.clear(); }
+    StagingFolder(const StagingFolder&) = delete;
+    StagingFolder& operator=(const StagingFolder&) = delete;
+    ~StagingFolder()
+    {
+        std::error_code ec;
+        if (!path_.empty()) fs::remove_all(path_, ec);
+    }
+    const fs::path& path() const { return path_; }
+
+    // Moves every file into the same place under `destination`: first the
+    // destination's old light files and manifest are removed (a stack is
+    // complete only while its .lp exists), then the images, normals and
+    // records go into place, then the .lp files, then the manifest.
+    Status commit(const fs::path& destination, const std::vector<fs::path>& last)
+    {
+        std::error_code ec;
+        std::vector<fs::path> files;
+        for (const auto& entry : fs::recursive_directory_iterator(path_, ec))
+            if (entry.is_regular_file()) files.push_back(fs::relative(entry.path(), path_, ec));
+        if (ec) return io_error("cannot list '" + path_.string() + "': " + ec.message());
+        std::sort(files.begin(), files.end());
+        const auto is_last = [&](const fs::path& f) { return std::find(last.begin(), last.end(), f) != last.end(); };
+        // Nothing is moved unless every file can take its place.
+        for (const fs::path& f : files) {
+            if (fs::is_directory(destination / f, ec))
+                return io_error("cannot write '" + (destination / f).string() + "': it is a directory");
+            const fs::path folder = (destination / f).parent_path();
+            if (fs::exists(folder, ec) && !fs::is_directory(folder, ec))
+                return io_error("cannot write '" + (destination / f).string() + "': '" + folder.string() +
+                                "' is not a folder");
+        }
+        for (const fs::path& f : last) fs::remove(destination / f, ec);
+        const auto move = [&](const fs::path& f) -> Status {
+            fs::create_directories((destination / f).parent_path(), ec);
+            fs::rename(path_ / f, destination / f, ec);
+            if (ec)
+                return io_error("cannot move '" + (path_ / f).string() + "' to '" + (destination / f).string() +
+                                "': " + ec.message());
+            return ok();
+        };
+        for (const fs::path& f : files)
+            if (!is_last(f))
+                if (auto st = move(f); !st) return st;
+        for (const fs::path& f : last)  // in their order: the manifest after the light files
+            if (auto st = move(f); !st) return st;
+        fs::remove_all(path_, ec);
+        path_.clear();
+        return ok();
+    }
+
+private:
+    StagingFolder() = default;
+    fs::path path_;
+};
 
 struct Slot {
     fs::path light_file;   // the slot's .lp
@@ -236,17 +315,27 @@ Expected<MadeStack> make_stack(const MakeStackOptions& options, const ColorConfi
     auto digest = sha256_file_hex(options.scene);
     if (!digest) return digest.error();
 
-    std::vector<Slot> slots;
+    // Every file is written into a staging folder beside the output and
+    // moved into place only when all of them are written.
     const fs::path output(options.output);
+    fs::path destination = output.parent_path();
+    if (destination.empty()) destination = ".";
+    auto staging = StagingFolder::create(output);
+    if (!staging) return staging.error();
+    std::vector<Slot> slots;
+    std::vector<fs::path> last;  // moved into place last, in this order
     if (!several) {
-        slots.push_back({output, output.filename().string(), normalize(options.views[0])});
+        slots.push_back({staging->path() / output.filename(), output.filename().string(), normalize(options.views[0])});
+        last.push_back(output.filename());
     } else {
         for (std::size_t k = 0; k < options.views.size(); ++k) {
             char name[32];
             std::snprintf(name, sizeof name, "view-%02zu", k);
-            slots.push_back({output.parent_path() / name / "stack.lp", std::string(name) + "/stack.lp",
-                             normalize(options.views[k])});
+            slots.push_back(
+                {staging->path() / name / "stack.lp", std::string(name) + "/stack.lp", normalize(options.views[k])});
+            last.push_back(fs::path(name) / "stack.lp");
         }
+        last.push_back(output.filename());
     }
 
     MadeStack made;
@@ -283,10 +372,15 @@ Expected<MadeStack> make_stack(const MakeStackOptions& options, const ColorConfi
         btf.push_back({slots[k].relative, slots[k].view});
     }
     if (several) {
-        if (auto st = write_btf_manifest(options.output, btf); !st) return st.error();
+        if (auto st = write_btf_manifest((staging->path() / output.filename()).string(), btf); !st) return st.error();
         ++made.files;
         made.manifest = options.output;
     }
+    // What was made, named where it will lie.
+    for (auto* names : {&made.light_files, &made.records})
+        for (std::string& name : *names)
+            name = (destination / fs::path(name).lexically_relative(staging->path())).string();
+    if (auto st = staging->commit(destination, last); !st) return st.error();
     made.seconds = clock.elapsed_ms() / 1000;
     return made;
 }
