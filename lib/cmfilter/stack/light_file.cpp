@@ -75,8 +75,12 @@ std::string LightFile::image_path(std::size_t k) const
     const bool windows_absolute = slashed.size() > 2 && slashed[1] == ':' && slashed[2] == '/';
     if (slashed != name && !windows_absolute && slashed[0] != '/' && std::filesystem::exists(folder + slashed, ec))
         return folder + slashed;
+    // Only for names that are another machine's (absolute, or with '\\'):
+    // a missing relative name is reported as it is, not replaced by another
+    // file that happens to share its name.
+    const bool foreign = windows_absolute || slashed != name || name[0] == '/';
     const std::size_t cut = slashed.find_last_of('/');
-    if (cut != std::string::npos && cut + 1 < slashed.size()) {
+    if (foreign && cut != std::string::npos && cut + 1 < slashed.size()) {
         const std::string beside = folder + slashed.substr(cut + 1);
         if (std::filesystem::exists(beside, ec)) return beside;
     }

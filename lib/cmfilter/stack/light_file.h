@@ -38,7 +38,8 @@ struct LightFile {
     // capture software records that machine's paths, often Windows ones:
     // "C:\\capture\\jpeg\\img_01.jpg") still opens when its images lie
     // beside it: a name that does not exist is tried with '\\' read as '/',
-    // then as the file of the same name in the .lp's folder.
+    // then, if it is absolute or has a '\\', as the file of the same name in
+    // the .lp's folder (a missing relative name is reported as written).
     std::string image_path(std::size_t k) const;
 };
 

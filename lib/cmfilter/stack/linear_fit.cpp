@@ -92,15 +92,22 @@ Expected<LightSetConditioning> check_light_set(const std::vector<Vec3>& lights, 
                              " lights can determine (fewer lights than terms)",
                          "LinearFitOptions::model");
 
-    // Collinear: the 2 x N matrix of projections (lu, lv) has rank 1, that is
-    // its smaller singular value is tiny beside the larger (the square roots
-    // of the eigenvalues of the 2 x 2 scatter matrix).
+    // Collinear: the projections (lu, lv) lie on one line (through the pole
+    // or not): the smaller singular value of their centred 2 x N matrix is
+    // tiny beside the larger (the square roots of the eigenvalues of the
+    // 2 x 2 scatter matrix about their mean).
+    double mean_u = 0, mean_v = 0;
+    for (const Vec3& l : lights) {
+        mean_u += l.x / n;
+        mean_v += l.y / n;
+    }
     Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
     double lz_min = std::numeric_limits<double>::infinity(), lz_max = -lz_min, lz_sum = 0;
     for (const Vec3& l : lights) {
-        scatter(0, 0) += l.x * l.x;
-        scatter(0, 1) += l.x * l.y;
-        scatter(1, 1) += l.y * l.y;
+        const double du = l.x - mean_u, dv = l.y - mean_v;
+        scatter(0, 0) += du * du;
+        scatter(0, 1) += du * dv;
+        scatter(1, 1) += dv * dv;
         lz_min = std::min(lz_min, l.z);
         lz_max = std::max(lz_max, l.z);
         lz_sum += l.z;
@@ -113,11 +120,13 @@ Expected<LightSetConditioning> check_light_set(const std::vector<Vec3>& lights, 
         const Eigen::Vector2d dir = eig.eigenvectors().col(1);
         double azimuth = std::atan2(dir(1), dir(0)) * 180 / kPi;
         if (azimuth < 0) azimuth += 180;
+        // The line's distance from the pole.
+        const double offset = std::abs(-dir(1) * mean_u + dir(0) * mean_v);
         return bad_input("the " + std::to_string(n) + " lights cannot determine a " + name +
-                         " fit: they are collinear (every projection (lu, lv) lies on one line through the pole, "
-                         "azimuth " +
-                         format_number("%.1f", azimuth) + " degrees; smaller / larger singular value " +
-                         format_number("%.3g", s_small / s_large) + ")");
+                         " fit: they are collinear (every projection (lu, lv) lies on one line, at azimuth " +
+                         format_number("%.1f", azimuth) + " degrees, " + format_number("%.3g", offset) +
+                         " from the pole; smaller / larger singular value " + format_number("%.3g", s_small / s_large) +
+                         ")");
     }
     if (lz_max - lz_min <= kElevationTolerance) {
         const double elevation = std::asin(std::clamp(lz_sum / n, -1.0, 1.0)) * 180 / kPi;

@@ -65,13 +65,15 @@ struct LinearFit {
 // The conditioning of `lights` for `model` (the singular values of the
 // light matrix), and BadInput when they cannot determine it, checked in this
 // order: fewer lights than terms (field LinearFitOptions::model: another
-// model may fit); all lights' projections (lu, lv) on one line through the
-// pole ("collinear": the smaller singular value of the 2 x N matrix of
-// projections below 1e-4 of the larger; the message gives the line's
-// azimuth); all at one elevation (lz spread below 1e-4: "all at one
-// elevation, 45.0 degrees"; a PTM's lu^2 + lv^2, an HSH's cos(theta) is
-// then constant); a rank below the terms for another reason ("rank 5 of
-// 6", with the singular values and the condition number). BadInput naming
+// model may fit); all lights' projections (lu, lv) on one line, through the
+// pole or not ("collinear": the smaller singular value of the centred 2 x N
+// matrix of projections below 1e-4 of the larger; the message gives the
+// line's azimuth and distance from the pole); all at one elevation (lz
+// spread below 1e-4: "all at one elevation, 45.0 degrees"; a PTM's lu^2 +
+// lv^2, an HSH's cos(theta) is then constant). A rank below the terms for
+// another reason is not refused: the singular values below the threshold
+// are counted in `clamped` and the fit is the minimum-norm least-squares
+// one (a light matrix whose singular values are all zero is refused). BadInput naming
 // LinearFitOptions::singular_threshold unless it is finite and in [0, 1).
 Expected<LightSetConditioning> check_light_set(const std::vector<Vec3>& lights, LinearModel model,
                                                double singular_threshold = 1e-6);

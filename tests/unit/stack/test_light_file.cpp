@@ -113,3 +113,13 @@ TEST_CASE("light file: images named by another machine's paths are found beside 
     // Not found anywhere: the name as written, resolved, so the error names it.
     CHECK(f->image_path(3) == dir + "/C:\\capture\\gone.jpg");
 }
+
+TEST_CASE("light file: a missing relative name is not replaced by a file of the same name")
+{
+    const std::string dir = cmfilter_test::temp_dir("cmfilter-light-file-relative");
+    std::ofstream(dir + "/img.png") << "x";
+    std::ofstream(dir + "/rel.lp") << "1\nsub/img.png 0 0 1\n";
+    auto f = read_light_file(dir + "/rel.lp");
+    REQUIRE(f);
+    CHECK(f->image_path(0) == dir + "/sub/img.png");
+}

@@ -258,6 +258,17 @@ TEST_CASE("linear fit: degenerate light sets are refused naming the degeneracy")
     // A jitter of 1e-7 in the directions is still collinear.
     for (std::size_t i = 0; i < line.size(); ++i) line[i].x += (i % 2 ? 1e-7 : -1e-7) * static_cast<double>(i);
     CHECK(contains(fit_error(line, LinearModel::PtmRgb), "collinear"));
+    // A line off the pole (lu = 0.3, lv from -0.8 to 0.8): lu^2, lu and 1
+    // are then proportional, so the PTM's rank falls by two; that is
+    // collinear too, and the message gives the line's distance from the pole.
+    std::vector<Vec3> off;
+    for (int i = 0; i < 9; ++i) {
+        const double v = -0.8 + 0.2 * i;
+        off.push_back({0.3, v, std::sqrt(1 - 0.09 - v * v)});
+    }
+    e = fit_error(off, LinearModel::PtmRgb);
+    CHECK(contains(e, "collinear"));
+    CHECK(contains(e, "azimuth 90.0 degrees, 0.3 from the pole"));
 
     // All at one elevation: a ring at 45 degrees.
     std::vector<Vec3> ring;
