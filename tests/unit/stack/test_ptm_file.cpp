@@ -162,6 +162,20 @@ TEST_CASE("ptm: PTM_FORMAT_RGB written and read back is within half a quantisati
                 const std::size_t j = t * 18 + c * 6 + k;
                 max_error[k] = std::max(max_error[k], std::abs(double(back.coefficients[j]) - fit.coefficients[j]));
             }
+    // Each term's scale is close to the smallest that covers its range (the
+    // range widened to hold 0, in codes): 256 byte values hold at most 255
+    // steps, and the best bias wastes less than one more.
+    for (int k = 0; k < 6; ++k) {
+        double lo = 0, hi = 0;
+        for (std::size_t t = 0; t < fit.texels(); ++t)
+            for (int c = 0; c < 3; ++c) {
+                const double v = 255.0 * fit.coefficients[t * 18 + c * 6 + k];
+                lo = std::min(lo, v);
+                hi = std::max(hi, v);
+            }
+        CHECK(p.scales[k] >= (hi - lo) / 256.0);
+        CHECK(p.scales[k] <= (hi - lo) / 254.0 * (1 + 1e-6));
+    }
     double bound = 0;
     for (int k = 0; k < 6; ++k) {
         CHECK(max_error[k] <= p.scales[k] / 510.0 * (1 + 1e-5));
