@@ -68,3 +68,8 @@ cmfilter_cli_case(NAME bad.info-jpeg-ptm EXIT 3 STDERR "PTM_FORMAT_JPEG_RGB, whi
                   COMMAND ${CMF} info ${OUT}/fit-jpeg.ptm)
 set_tests_properties(cli.bad.relight-truncated-ptm cli.bad.normals-truncated-rti cli.bad.info-jpeg-ptm
                      PROPERTIES FIXTURES_REQUIRED "cli_dirs;bad_fit_files")
+add_test(NAME cli.bad.normals-zero-reference
+         COMMAND bash -c "$2 --pattern constant:color=0,0,0 8x8 3 -d float -o $1/zero-normals.exr && bash $3 --exit 3 --stderr 'zero or non-finite at every texel' -- $0 normals $1/fit-good-ptm-rgb.exr --reference $1/zero-normals.exr"
+                 ${CMF} ${OUT} ${OIIOTOOL} ${RUN})
+set_tests_properties(cli.bad.normals-zero-reference PROPERTIES FIXTURES_REQUIRED "cli_dirs;fit_good_ptm-rgb" LABELS cli
+                     ENVIRONMENT "OCIO=")

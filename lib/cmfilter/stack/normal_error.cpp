@@ -33,6 +33,9 @@ Expected<ErrorSummary> normal_angle_error(const FitNormals& normals, const std::
         const double d = double(a[0]) * b[0] + double(a[1]) * b[1] + double(a[2]) * b[2];
         angles.push_back(std::atan2(std::sqrt(cx * cx + cy * cy + cz * cz), d) * 180.0 / 3.14159265358979323846);
     }
+    if (angles.empty())
+        return bad_input("the reference normals are zero or non-finite at every texel; expected unit normals (X, Y, "
+                         "Z) such as make-stack's normals file");
     return summarize_errors(std::move(angles));
 }
 

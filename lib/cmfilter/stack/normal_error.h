@@ -15,7 +15,7 @@ namespace cmfilter {
 
 // `reference`: width * height * 3 floats (any length > 0 per texel; texels
 // whose reference is zero or non-finite are skipped). BadInput when the sizes
-// differ.
+// differ, or when no texel has a usable reference.
 Expected<ErrorSummary> normal_angle_error(const FitNormals& normals, const std::vector<float>& reference, int width,
                                           int height);
 
