@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // cmfilter fit: a linear relighting model (PTM RGB or LRGB, HSH of order 2
-// or 3) fitted to every texel of an image stack in one solve
-// (docs/stacks.md), written as cmfilter's float EXR, or as a .ptm or .rti
-// that RTI viewers open.
+// or 3) fitted to every texel of an image stack in one solve, its images
+// streamed one at a time (docs/stacks.md), written as cmfilter's float
+// EXR, or as a .ptm or .rti that RTI viewers open.
 #include "command.h"
 
 #include "cmfilter/stack/fit_file.h"
@@ -12,6 +12,7 @@
 #include "cmfilter/stack/ptm_file.h"
 #include "cmfilter/stack/relight_error.h"
 #include "cmfilter/stack/rti_file.h"
+#include "cmfilter/stack/streamed_fit.h"
 #include "cmfilter/util/atomic_output.h"
 #include "cmfilter/util/stopwatch.h"
 
@@ -89,24 +90,21 @@ Status run(const FitArgs& args)
     auto config = load_color_config(args.ocio_config);
     if (!config) return config.error();
 
+    // The stack streamed: its images read and added to the fit one at a
+    // time (streamed_fit.h), never all held.
     Stopwatch clock;
     StackLoadOptions load;
     load.light_file = args.stack;
     load.colorspace = args.colorspace;
     load.encoding = encoding;
     load.threads = args.threads;
-    auto stack = load_image_stack(load, *config);
-    if (!stack) return stack.error();
-    const double read_seconds = clock.elapsed_ms() / 1000;
-
     LinearFitOptions options;
     options.model = *model;
     options.singular_threshold = args.singular_threshold;
     options.threads = args.threads;
-    Stopwatch fit_clock;
-    auto fit = fit_linear(*stack, options);
+    auto fit = fit_linear_from_files(load, options, *config);
     if (!fit) return fit.error();
-    const double fit_seconds = fit_clock.elapsed_ms() / 1000;
+    const double fit_seconds = clock.elapsed_ms() / 1000;
 
     PtmQuantisation quantisation;
     RtiQuantisation rti_quantisation;
@@ -126,16 +124,14 @@ Status run(const FitArgs& args)
     auto stored = load_fit(args.output);
     if (!stored) return prefixed("reading back '" + args.output + "': ", stored.error());
     if (!args.no_error) {
-        auto e = relight_error(*stored, *stack, *config, args.threads);
+        auto e = relight_error_from_files(*stored, load, *config, args.threads);
         if (!e) return e.error();
         training = *e;
     }
     if (!args.held_out.empty()) {
         StackLoadOptions h = load;
         h.light_file = args.held_out;
-        auto held_stack = load_image_stack(h, *config);
-        if (!held_stack) return held_stack.error();
-        auto e = relight_error(*stored, *held_stack, *config, args.threads);
+        auto e = relight_error_from_files(*stored, h, *config, args.threads);
         if (!e) return e.error();
         held = *e;
     }
@@ -148,10 +144,11 @@ Status run(const FitArgs& args)
         j["model"] = to_string(*model);
         j["size"] = {fit->width, fit->height};
         j["channels"] = fit->channels;
-        j["lights"] = stack->count();
+        j["lights"] = cond.lights;
         j["encoding"] = to_string(encoding);
         j["bytes"] = bytes;
-        j["seconds"] = {{"read", read_seconds}, {"fit", fit_seconds}, {"total", total_seconds}};
+        // "fit": the streamed pass that reads the images and fits them.
+        j["seconds"] = {{"fit", fit_seconds}, {"total", total_seconds}};
         j["conditioning"] = {{"condition_number", cond.condition_number},
                              {"largest_singular", cond.largest_singular},
                              {"smallest_singular", cond.smallest_singular},
@@ -164,10 +161,10 @@ Status run(const FitArgs& args)
     } else if (!args.quiet) {
         std::cout << "wrote " << args.output << ": " << to_string(*model) << " fit, " << fit->width << " x "
                   << fit->height << ", " << fit->channels << " channels, " << bytes << " bytes\n"
-                  << "  " << stack->count() << " lights, condition number " << cond.condition_number
+                  << "  " << cond.lights << " lights, condition number " << cond.condition_number
                   << (cond.clamped ? " (" + std::to_string(cond.clamped) + " singular values clamped)" : "") << "\n"
                   << "  values " << to_string(encoding) << "\n"
-                  << "  read " << read_seconds << " s, fit " << fit_seconds << " s, total " << total_seconds << " s\n";
+                  << "  read and fit " << fit_seconds << " s, total " << total_seconds << " s\n";
         if (format == FitFileFormat::Ptm || format == FitFileFormat::Rti)
             std::cout << "  quantisation: relit values within "
                       << (format == FitFileFormat::Ptm ? quantisation.max_value_error

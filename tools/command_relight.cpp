@@ -51,9 +51,8 @@ Status run(const RelightArgs& args)
         load.light_file = args.reference;
         load.colorspace = args.colorspace;
         load.threads = args.threads;
-        auto stack = load_image_stack(load, *config);
-        if (!stack) return stack.error();
-        auto e = relight_error(*fit, *stack, *config, args.threads);
+        // The stack's images streamed, one per thread at a time.
+        auto e = relight_error_from_files(*fit, load, *config, args.threads);
         if (!e) return e.error();
         if (args.json) {
             nlohmann::json j;

@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/stack/image_stack.h"
 
-#include "cmfilter/io/image_colorspace.h"
-#include "cmfilter/io/image_reading.h"
 #include "cmfilter/util/parallel_for.h"
 
+#include <algorithm>
 #include <cmath>
 #include <mutex>
 #include <optional>
 #include <sstream>
+#include <vector>
 
 namespace cmfilter {
 
@@ -18,11 +18,6 @@ const char* to_string(StackEncoding encoding)
 }
 
 namespace {
-
-struct LoadedImage {
-    ImageData data;
-    ImageColorSpace space;
-};
 
 // The colour channels of an image (the first three, or the one grey
 // channel) converted with `convert` (a function on interleaved RGB).
@@ -40,11 +35,14 @@ Status convert_color_channels(ImageData& img, Convert&& convert)
     return ok();
 }
 
-Expected<LoadedImage> load_one(const std::string& path, const StackLoadOptions& options, const ColorConfig& config)
+}  // namespace
+
+Expected<StackImage> load_stack_image(const std::string& path, const StackLoadOptions& options,
+                                      const ColorConfig& config)
 {
     auto image = read_image(path);
     if (!image) return image.error();
-    LoadedImage out{std::move(*image), {}};
+    StackImage out{std::move(*image), {}};
     ImageData& img = out.data;
     for (std::size_t i = 0; i < img.pixels.size(); ++i)
         if (!std::isfinite(img.pixels[i])) {
@@ -73,7 +71,40 @@ Expected<LoadedImage> load_one(const std::string& path, const StackLoadOptions& 
     return out;
 }
 
-}  // namespace
+Status check_stack_light_count(const LightFile& lights)
+{
+    const int n = static_cast<int>(lights.lights.size());
+    if (n < kMinStackLights)
+        return bad_input("light file '" + lights.path + "' has " + std::to_string(n) + " light" + (n == 1 ? "" : "s") +
+                         "; a stack needs at least " + std::to_string(kMinStackLights) +
+                         " (a PTM has 6 coefficients per channel)");
+    return ok();
+}
+
+Status check_stack_image_shape(const std::string& path, const ImageData& image, const std::string& first_path,
+                               int width, int height, int channels)
+{
+    if (image.width != width || image.height != height) {
+        std::ostringstream msg;
+        msg << "stack image '" << path << "' is " << image.width << "x" << image.height << " but '" << first_path
+            << "' is " << width << "x" << height << "; every image of a stack must have the same size";
+        return bad_input(msg.str());
+    }
+    if (image.channels != channels) {
+        std::ostringstream msg;
+        msg << "stack image '" << path << "' has " << image.channels << " channel" << (image.channels == 1 ? "" : "s")
+            << " but '" << first_path << "' has " << channels << "; every image of a stack must have the same channels";
+        return bad_input(msg.str());
+    }
+    return ok();
+}
+
+std::string stack_colorspace(const ImageColorSpace& first, const StackLoadOptions& options, const ColorConfig& config)
+{
+    return options.encoding == StackEncoding::SceneLinear && !config.is_data(first.colorspace)
+               ? config.scene_linear_name()
+               : first.colorspace;
+}
 
 Expected<ImageStack> load_image_stack(const StackLoadOptions& options, const ColorConfig& config)
 {
@@ -81,10 +112,7 @@ Expected<ImageStack> load_image_stack(const StackLoadOptions& options, const Col
     if (!lights) return lights.error();
     const LightFile& lp = *lights;
     const int n = static_cast<int>(lp.lights.size());
-    if (n < kMinStackLights)
-        return bad_input("light file '" + lp.path + "' has " + std::to_string(n) + " light" + (n == 1 ? "" : "s") +
-                         "; a stack needs at least " + std::to_string(kMinStackLights) +
-                         " (a PTM has 6 coefficients per channel)");
+    if (auto st = check_stack_light_count(lp); !st) return st.error();
 
     ImageStack stack;
     stack.light_file = lp.path;
@@ -96,14 +124,12 @@ Expected<ImageStack> load_image_stack(const StackLoadOptions& options, const Col
 
     // The first image fixes the size and channels; the rest are read in
     // parallel into their slots and checked against it.
-    auto first = load_one(stack.images[0], options, config);
+    auto first = load_stack_image(stack.images[0], options, config);
     if (!first) return first.error();
     stack.width = first->data.width;
     stack.height = first->data.height;
     stack.channels = first->data.channels;
-    stack.colorspace = options.encoding == StackEncoding::SceneLinear && !config.is_data(first->space.colorspace)
-                           ? config.scene_linear_name()
-                           : first->space.colorspace;
+    stack.colorspace = stack_colorspace(first->space, options, config);
     const std::size_t per_image = stack.texels() * stack.channels;
     stack.pixels.resize(per_image * n);
     std::copy(first->data.pixels.begin(), first->data.pixels.end(), stack.pixels.begin());
@@ -116,23 +142,13 @@ Expected<ImageStack> load_image_stack(const StackLoadOptions& options, const Col
     };
     parallel_for(n - 1, options.threads, [&](int i) {
         const int k = i + 1;
-        auto img = load_one(stack.images[k], options, config);
+        auto img = load_stack_image(stack.images[k], options, config);
         if (!img) return fail(k, img.error());
         const ImageData& d = img->data;
-        if (d.width != stack.width || d.height != stack.height) {
-            std::ostringstream msg;
-            msg << "stack image '" << stack.images[k] << "' is " << d.width << "x" << d.height << " but '"
-                << stack.images[0] << "' is " << stack.width << "x" << stack.height
-                << "; every image of a stack must have the same size";
-            return fail(k, bad_input(msg.str()));
-        }
-        if (d.channels != stack.channels) {
-            std::ostringstream msg;
-            msg << "stack image '" << stack.images[k] << "' has " << d.channels << " channel"
-                << (d.channels == 1 ? "" : "s") << " but '" << stack.images[0] << "' has " << stack.channels
-                << "; every image of a stack must have the same channels";
-            return fail(k, bad_input(msg.str()));
-        }
+        if (auto st =
+                check_stack_image_shape(stack.images[k], d, stack.images[0], stack.width, stack.height, stack.channels);
+            !st)
+            return fail(k, st.error());
         std::copy(d.pixels.begin(), d.pixels.end(), stack.image(k));
     });
     if (failure) return failure->second;

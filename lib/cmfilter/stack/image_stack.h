@@ -5,10 +5,13 @@
 // display-encoded colour and are decoded to scene-linear with OpenColorIO,
 // as colour maps are (image_colorspace.h: an explicit colour space, else the
 // file's metadata, else sRGB); float images (EXR) are taken as linear.
-// Every image is read into memory as float.
+// Every image is read into memory as float (streamed_fit.h fits a stack
+// without holding it).
 #pragma once
 
 #include "cmfilter/color/color_config.h"
+#include "cmfilter/io/image_colorspace.h"
+#include "cmfilter/io/image_reading.h"
 #include "cmfilter/math/vec3.h"
 #include "cmfilter/stack/light_file.h"
 #include "cmfilter/util/error.h"
@@ -64,5 +67,35 @@ struct StackLoadOptions {
 // counts (naming both files and both values), an image with non-finite
 // pixels. Io naming the image: a missing or unreadable image.
 Expected<ImageStack> load_image_stack(const StackLoadOptions& options, const ColorConfig& config);
+
+// One image of a stack, read and decoded as load_image_stack reads each:
+// checked finite, its colour channels decoded to scene-linear (the colour
+// space from StackLoadOptions::colorspace, else the file's metadata, else
+// sRGB; float images linear) and re-encoded to sRGB display values when
+// StackLoadOptions::encoding asks for them. Shared with the streamed fits
+// and errors that hold one image at a time (streamed_fit.h,
+// relight_error.h), so that all of them read, decode and check alike.
+struct StackImage {
+    ImageData data;         // width * height * channels floats, decoded
+    ImageColorSpace space;  // the colour space the file was decoded from
+};
+
+// Io naming the image: missing or unreadable. BadInput naming the image: a
+// non-finite value (with its texel and channel), or an unknown colour space.
+Expected<StackImage> load_stack_image(const std::string& path, const StackLoadOptions& options,
+                                      const ColorConfig& config);
+
+// BadInput naming the light file when it has fewer than kMinStackLights.
+Status check_stack_light_count(const LightFile& lights);
+
+// BadInput when `image` (at `path`) differs in size or channels from the
+// stack's first image (`first_path`, width x height, channels), naming both
+// files and both values.
+Status check_stack_image_shape(const std::string& path, const ImageData& image, const std::string& first_path,
+                               int width, int height, int channels);
+
+// The colour space a stack's values are in (ImageStack::colorspace), given
+// its first image's.
+std::string stack_colorspace(const ImageColorSpace& first, const StackLoadOptions& options, const ColorConfig& config);
 
 }  // namespace cmfilter

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/stack/linear_fit.h"
 
+#include "cmfilter/stack/light_matrix.h"
 #include "cmfilter/util/parallel_for.h"
 
 #include <Eigen/Dense>
@@ -35,18 +36,6 @@ std::string format_number(const char* format, double v)
     char buf[64];
     std::snprintf(buf, sizeof buf, format, v);
     return buf;
-}
-
-// The light matrix: one row per light, one column per basis function.
-Eigen::MatrixXd light_matrix(const std::vector<Vec3>& lights, LinearModel model)
-{
-    const int terms = basis_terms(model);
-    Eigen::MatrixXd a(static_cast<Eigen::Index>(lights.size()), terms);
-    for (std::size_t k = 0; k < lights.size(); ++k) {
-        const auto b = evaluate_basis(model, lights[k]);
-        for (int j = 0; j < terms; ++j) a(static_cast<Eigen::Index>(k), j) = b[static_cast<std::size_t>(j)];
-    }
-    return a;
 }
 
 // The terms that a constant cos(theta) makes dependent, for the message.
@@ -177,13 +166,9 @@ Expected<LinearFit> fit_linear(const ImageStack& stack, const LinearFitOptions& 
     if (!conditioning) return prefixed(where, conditioning.error());
 
     // The pseudo-inverse P = V S^+ U^T of the light matrix A.
-    const Eigen::MatrixXd a = light_matrix(stack.lights, options.model);
-    Eigen::JacobiSVD<Eigen::MatrixXd> svd(a, Eigen::ComputeThinU | Eigen::ComputeThinV);
-    const Eigen::VectorXd& s = svd.singularValues();
-    Eigen::VectorXd s_inverse(s.size());
-    for (Eigen::Index j = 0; j < s.size(); ++j)
-        s_inverse(j) = s(j) > options.singular_threshold * s(0) && s(j) > 0 ? 1 / s(j) : 0.0;
-    const Eigen::MatrixXd p = svd.matrixV() * s_inverse.asDiagonal() * svd.matrixU().transpose();
+    const LightPseudoInverse inverse = light_pseudo_inverse(stack.lights, options.model, options.singular_threshold);
+    const Eigen::MatrixXd& a = inverse.a;
+    const Eigen::MatrixXd& p = inverse.p;
 
     LinearFit fit;
     fit.model = options.model;

@@ -29,4 +29,21 @@ struct RelightError {
 Expected<RelightError> relight_error(const LinearFit& fit, const ImageStack& reference, const ColorConfig& config,
                                      int threads = 0);
 
+// relight_error(fit, load_image_stack(reference, config), config) without
+// holding the stack: its images read one at a time per thread (`threads` of
+// them in flight, 0: the hardware threads; StackLoadOptions::threads is not
+// used), each relit, compared and dropped. The same RMSEs (the same sums in
+// the same order) and CIEDE2000 mean (to rounding), maximum and exact
+// 95th percentile (streamed_error_summary.h: its selection usually ends
+// with the first reading of the images, and may read them again, up to
+// three more times, when the percentile's estimate leaves the values it
+// keeps: at most 2^23 of them, 64 MiB). The errors of load_image_stack (the
+// light file, the light count, a missing or unreadable image, a non-finite
+// value, an image whose size or channels differ from the first's), and
+// BadInput when the first image's size or channels differ from the fit's.
+// Peak memory: per image in flight the image, the fit relit at its light
+// (4 bytes x texels x channels each) and its differences (8 bytes x texels).
+Expected<RelightError> relight_error_from_files(const LinearFit& fit, const StackLoadOptions& reference,
+                                                const ColorConfig& config, int threads = 0);
+
 }  // namespace cmfilter
