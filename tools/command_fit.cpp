@@ -106,22 +106,29 @@ Status run(const FitArgs& args)
     if (!fit) return fit.error();
     const double fit_seconds = clock.elapsed_ms() / 1000;
 
+    // The fit is written to a temporary file beside the output, measured
+    // from that file (so the error includes the .ptm's or .rti's
+    // quantisation), and moved into place only when every step succeeded:
+    // a bad held-out stack leaves no output.
+    auto staged = AtomicOutput::begin(args.output);
+    if (!staged) return staged.error();
+    const std::string written_path = staged->temp_path();
     PtmQuantisation quantisation;
     RtiQuantisation rti_quantisation;
     FitFileInfo info;
     info.source = args.stack;
     Status written = ok();
-    if (format == FitFileFormat::Ptm) written = write_ptm(args.output, *fit, &quantisation);
-    else if (format == FitFileFormat::Rti) written = write_rti(args.output, *fit, &rti_quantisation);
-    else written = write_fit_exr(args.output, *fit, info);
+    if (format == FitFileFormat::Ptm) written = write_ptm(written_path, *fit, &quantisation);
+    else if (format == FitFileFormat::Rti) written = write_rti(written_path, *fit, &rti_quantisation);
+    else written = write_fit_exr(written_path, *fit, info);
     if (!written) return written;
     const double total_seconds = clock.elapsed_ms() / 1000;
-    const auto bytes = std::filesystem::file_size(args.output);
+    const auto bytes = std::filesystem::file_size(written_path);
 
     // The written file's own relighting error: at the training lights, and
     // at the held-out lights when given.
     std::optional<RelightError> training, held;
-    auto stored = load_fit(args.output);
+    auto stored = load_fit(written_path);
     if (!stored) return prefixed("reading back '" + args.output + "': ", stored.error());
     if (!args.no_error) {
         auto e = relight_error_from_files(*stored, load, *config, args.threads);
@@ -135,6 +142,7 @@ Status run(const FitArgs& args)
         if (!e) return e.error();
         held = *e;
     }
+    if (auto st = staged->commit(); !st) return st;
 
     const LightSetConditioning& cond = fit->conditioning;
     if (args.json) {
@@ -208,7 +216,8 @@ Command setup_fit(CLI::App& parent)
             [args] { return run(*args); },
             {{"LinearFitOptions::singular_threshold", "--singular-threshold"},
              {"LinearFitOptions::model", "--model"},
-             {"StackLoadOptions::colorspace", "--colorspace"}}};
+             {"StackLoadOptions::colorspace", "--colorspace"},
+             {"StackLoadOptions::encoding", "--encoding"}}};
 }
 
 }  // namespace cmfilter::cli

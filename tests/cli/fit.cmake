@@ -32,6 +32,9 @@ fit_bad(one-elevation-hsh 3 "one elevation" elevation.lp --model hsh3)
 fit_bad(model 3 "--model 'ptm' is not a linear model" good.lp --model ptm)
 fit_bad(missing-lp 2 "no-such\\.lp" no-such.lp)
 fit_bad(threshold 3 "--singular-threshold" good.lp --singular-threshold -1)
+# A held-out stack that cannot be measured leaves no fit behind either.
+fit_bad(held-out-missing 2 "no-such-held\\.lp" good.lp --held-out ${STF}/no-such-held.lp)
+fit_bad(held-out-size 3 "is 4x4 with 3; expected the same size and channels" good.lp --held-out ${STF}/small.lp)
 cmfilter_cli_case(NAME bad.fit-ptm-hsh EXIT 3 STDERR "hsh2 cannot be written as a \\.ptm" ABSENT ${OUT}/fit-bad.ptm
                   COMMAND ${CMF} fit ${STF}/good.lp --model hsh2 -o ${OUT}/fit-bad.ptm)
 cmfilter_cli_case(NAME bad.fit-rti-ptm EXIT 3 STDERR "ptm-rgb cannot be written as a \\.rti" ABSENT ${OUT}/fit-bad.rti

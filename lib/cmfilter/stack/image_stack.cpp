@@ -55,7 +55,16 @@ Expected<StackImage> load_stack_image(const std::string& path, const StackLoadOp
     auto space = decide_image_colorspace(img, path, options.colorspace, "StackLoadOptions::colorspace", config);
     if (!space) return space.error();
     out.space = *space;
-    if (config.is_data(space->colorspace)) return out;
+    if (config.is_data(space->colorspace)) {
+        // Data is never colour-converted, so it has no display encoding.
+        if (options.encoding == StackEncoding::DisplayEncoded)
+            return bad_input("stack image '" + path + "' is in the data colour space '" + space->colorspace + "' (" +
+                                 space->rule +
+                                 "): its values cannot be display-encoded (as .ptm and .rti hold them); expected "
+                                 "colour images, or a scene-linear fit",
+                             "StackLoadOptions::encoding");
+        return out;
+    }
     if (auto st = convert_color_channels(
             img, [&](std::vector<float>& rgb) { return image_rgb_to_scene_linear(rgb, *space, config); });
         !st)
@@ -101,9 +110,11 @@ Status check_stack_image_shape(const std::string& path, const ImageData& image, 
 
 std::string stack_colorspace(const ImageColorSpace& first, const StackLoadOptions& options, const ColorConfig& config)
 {
-    return options.encoding == StackEncoding::SceneLinear && !config.is_data(first.colorspace)
-               ? config.scene_linear_name()
-               : first.colorspace;
+    if (config.is_data(first.colorspace)) return first.colorspace;
+    if (options.encoding == StackEncoding::SceneLinear) return config.scene_linear_name();
+    // Display-encoded: the values are now in the config's sRGB encoding.
+    auto srgb = config.resolve("sRGB");
+    return srgb ? *srgb : first.colorspace;
 }
 
 Expected<ImageStack> load_image_stack(const StackLoadOptions& options, const ColorConfig& config)

@@ -38,7 +38,7 @@ struct ImageStack {
     std::vector<std::string> images;  // each image's path as read (resolved against the .lp)
     std::string light_file;           // the .lp read (empty: made in memory)
     StackEncoding encoding = StackEncoding::SceneLinear;
-    std::string colorspace;  // the linear space's name (SceneLinear); the source's space otherwise
+    std::string colorspace;  // SceneLinear: the linear space; DisplayEncoded: the sRGB encoding; data: its space
     // lights.size() images, each width * height * channels floats,
     // row-major, top row first, interleaved: image k's texel t channel c is
     // pixels[(k * texels() + t) * channels + c].

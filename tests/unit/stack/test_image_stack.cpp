@@ -118,3 +118,27 @@ TEST_CASE("image stack: too few lights, a missing image, sizes and channels that
     CHECK(missing.error().kind == ErrorKind::Io);
     CHECK(missing.error().message.find("missing-2.png") != std::string::npos);
 }
+
+TEST_CASE("image stack: display-encoded values are named by the config's sRGB space; data cannot be encoded")
+{
+    const auto config = cmfilter_test::builtin_color_config();
+    StackLoadOptions options;
+    options.light_file = write_png_stack("named", 6);
+    options.encoding = StackEncoding::DisplayEncoded;
+    auto encoded = load_image_stack(options, config);
+    REQUIRE(encoded);
+    CHECK(encoded->colorspace == *config.resolve("sRGB"));
+    options.encoding = StackEncoding::SceneLinear;
+    auto linear = load_image_stack(options, config);
+    REQUIRE(linear);
+    CHECK(linear->colorspace == config.scene_linear_name());
+    options.colorspace = "Raw";
+    auto raw = load_image_stack(options, config);
+    REQUIRE(raw);
+    CHECK(raw->image(1)[0] == doctest::Approx(7 / 255.0));  // data: codes / 255, not decoded
+    options.encoding = StackEncoding::DisplayEncoded;
+    auto refused = load_image_stack(options, config);
+    REQUIRE_FALSE(refused);
+    CHECK(refused.error().field == "StackLoadOptions::encoding");
+    CHECK(refused.error().message.find("data colour space 'Raw'") != std::string::npos);
+}
