@@ -69,6 +69,10 @@ Expected<LafortuneFit> fit_lafortune(const ImageStack& stack, const LafortuneFit
         return bad_input("LafortuneFitOptions::max_iterations " + std::to_string(options.max_iterations) +
                              " is invalid: expected at least 1",
                          "LafortuneFitOptions::max_iterations");
+    if (!(options.function_tolerance > 0 && options.function_tolerance < 1))
+        return bad_input("LafortuneFitOptions::function_tolerance " + number(options.function_tolerance) +
+                             " is invalid: expected a fraction in (0, 1)",
+                         "LafortuneFitOptions::function_tolerance");
     const int needed = lafortune_scalar_parameters(options.lobes);
     if (stack.count() < needed)
         return bad_input("LafortuneFitOptions::lobes " + std::to_string(options.lobes) + " needs at least " +
@@ -76,13 +80,13 @@ Expected<LafortuneFit> fit_lafortune(const ImageStack& stack, const LafortuneFit
                              stack.light_file + "' has " + std::to_string(stack.count()),
                          "LafortuneFitOptions::lobes");
     if (options.variant == LafortuneVariant::Rgb && stack.channels != 3)
-        return bad_input("an rgb Lafortune fit needs a 3-channel stack, but '" + stack.light_file + "' has " +
-                             std::to_string(stack.channels) +
+        return bad_input("LafortuneFitOptions::variant rgb needs a 3-channel stack, but '" + stack.light_file +
+                             "' has " + std::to_string(stack.channels) +
                              " channels (one channel: the luminance variant; a fourth is not a reflectance)",
                          "LafortuneFitOptions::variant");
     if (options.variant == LafortuneVariant::Luminance && stack.channels != 1 && stack.channels != 3)
-        return bad_input("a luminance Lafortune fit needs a 1- or 3-channel stack, but '" + stack.light_file +
-                             "' has " + std::to_string(stack.channels) + " channels",
+        return bad_input("LafortuneFitOptions::variant luminance needs a 1- or 3-channel stack, but '" +
+                             stack.light_file + "' has " + std::to_string(stack.channels) + " channels",
                          "LafortuneFitOptions::variant");
     if (stack.width <= 0 || stack.height <= 0 ||
         stack.pixels.size() != stack.texels() * stack.channels * static_cast<std::size_t>(stack.count()))
@@ -116,6 +120,7 @@ Expected<LafortuneFit> fit_lafortune(const ImageStack& stack, const LafortuneFit
     settings.tolerance = options.tolerance;
     settings.min_gain = options.min_gain;
     settings.max_iterations = options.max_iterations;
+    settings.function_tolerance = options.function_tolerance;
     std::vector<long long> row_fallbacks(stack.height, 0);
     parallel_for(stack.height, options.threads, [&](int row) {
         std::vector<double> values(K), colour(static_cast<std::size_t>(K) * ch);

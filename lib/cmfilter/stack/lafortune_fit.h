@@ -33,7 +33,10 @@ struct LafortuneFitOptions {
     double min_gain = 0.1;
     Vec3 view{0, 0, 1};       // the images' view direction, z > 0 (normalised)
     int max_iterations = 20;  // Levenberg-Marquardt iterations per refinement, >= 1
-    int threads = 0;          // 0: all cores
+    // Levenberg-Marquardt stops when a step changes the texel's squared
+    // error by less than this fraction of it; in (0, 1).
+    double function_tolerance = 1e-4;
+    int threads = 0;  // 0: all cores
 };
 
 // The parameters one texel's scalar takes with `lobes` lobes: rho_d and per
@@ -44,7 +47,8 @@ constexpr int lafortune_scalar_parameters(int lobes) { return 1 + 4 * lobes; }
 // (LafortuneFitOptions::lobes); tolerance <= 0 or not finite with
 // auto_lobes (::tolerance); min_gain outside [0, 1) (::min_gain); a view
 // not finite, of zero length, or at or below the horizon (::view);
-// max_iterations < 1 (::max_iterations); fewer lights than
+// max_iterations < 1 (::max_iterations); function_tolerance outside (0, 1)
+// (::function_tolerance); fewer lights than
 // lafortune_scalar_parameters(lobes) (::lobes: fewer lobes may fit, the
 // rule a scalar's parameters to be determined by as many values); an Rgb
 // fit of a stack with other than 3 channels, a Luminance fit of other than

@@ -336,10 +336,10 @@ double solve_lobe_scales(const LobeLights& lights, const double* values, const s
 }
 
 ScalarLobeFit refine_lobes(const LobeLights& lights, const double* values, const std::vector<LobeShape>& start,
-                           int max_iterations)
+                           const ScalarLobeSettings& settings)
 {
     ScalarLobeFit initial = solved(lights, values, start);
-    if (start.empty() || max_iterations <= 0) return initial;
+    if (start.empty() || settings.max_iterations <= 0) return initial;
     const int m = static_cast<int>(start.size());
     VarProLobes function(lights, values, m);
     Eigen::VectorXd x(3 * m);
@@ -349,8 +349,8 @@ ScalarLobeFit refine_lobes(const LobeLights& lights, const double* values, const
         x[3 * i + 2] = start[i].t;
     }
     ceres::TinySolver<VarProLobes> solver;
-    solver.options.max_num_iterations = max_iterations;
-    solver.options.function_tolerance = 1e-4;
+    solver.options.max_num_iterations = settings.max_iterations;
+    solver.options.function_tolerance = settings.function_tolerance;
     solver.options.parameter_tolerance = 1e-7;
     solver.options.gradient_tolerance = 1e-12;
     solver.Solve(function, &x);
@@ -373,8 +373,7 @@ ScalarLobeFit fit_scalar_lobes(const LobeLights& lights, const double* values, c
     for (int m = 1; m <= settings.lobes; ++m) {
         const double rms = std::sqrt(fit.sse / K);
         if (settings.auto_lobes && rms <= settings.tolerance) break;
-        ScalarLobeFit trial =
-            refine_lobes(lights, values, add_lobe(lights, values, fit).shapes, settings.max_iterations);
+        ScalarLobeFit trial = refine_lobes(lights, values, add_lobe(lights, values, fit).shapes, settings);
         fallbacks += trial.fallbacks;
         if (settings.auto_lobes && !(std::sqrt(trial.sse / K) < (1 - settings.min_gain) * rms)) break;
         fit = std::move(trial);

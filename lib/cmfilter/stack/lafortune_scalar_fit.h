@@ -55,6 +55,9 @@ struct ScalarLobeSettings {
     // fraction of the RMS without it.
     double min_gain = 0.1;
     int max_iterations = 20;  // Levenberg-Marquardt iterations per refinement
+    // Levenberg-Marquardt stops when a step changes the cost by less than
+    // this fraction of it.
+    double function_tolerance = 1e-4;
 };
 
 struct ScalarLobeFit {
@@ -72,7 +75,7 @@ double solve_lobe_scales(const LobeLights& lights, const double* values, const s
 // Levenberg-Marquardt from `start` (all lobes refined together), with the
 // fallback above.
 ScalarLobeFit refine_lobes(const LobeLights& lights, const double* values, const std::vector<LobeShape>& start,
-                           int max_iterations);
+                           const ScalarLobeSettings& settings);
 
 // The whole fit: lobes added one at a time as above.
 ScalarLobeFit fit_scalar_lobes(const LobeLights& lights, const double* values, const ScalarLobeSettings& settings);
