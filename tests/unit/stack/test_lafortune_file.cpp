@@ -115,6 +115,7 @@ TEST_CASE("lafortune file: bad fits not written, damaged files refused with the 
     const std::string dir = cmfilter_test::temp_dir("cmfilter-lafortune-file-bad");
     std::mt19937_64 rng(8);
     const std::string path = dir + "/fit.exr";
+    std::filesystem::remove(path);  // a file from an earlier run
     LafortuneFit fit = random_fit(LafortuneVariant::Luminance, 3, 2, rng);
     LafortuneFit nan = fit;
     nan.parameters[3] = std::numeric_limits<float>::quiet_NaN();
