@@ -16,6 +16,7 @@
 #include <CLI/CLI.hpp>
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -66,6 +67,17 @@ Expected<std::pair<int, int>> parse_size(const std::string& option, const std::s
 // "x,y,z": a direction, normalised; BadInput naming the option unless three
 // finite numbers, nonzero, with z >= 0 (at or above the horizon).
 Expected<Vec3> parse_direction(const std::string& option, const std::string& text);
+// A stack as fit and relight --reference name it: a light file (.lp), or
+// a BTF manifest (.json) and its view slot `slot` (default 0), which gives
+// the light file and the view. BadInput: --slot with a light file, a slot
+// out of range; the manifest's own errors.
+struct StackSlot {
+    std::string light_file;
+    std::optional<Vec3> view;  // the manifest slot's view direction
+    std::optional<int> slot;   // the manifest slot read
+};
+Expected<StackSlot> resolve_stack_slot(const std::string& path, const std::optional<int>& slot);
+
 // --probes (render, bench): BadInput unless 1 <= probes <= 64.
 Status check_probes(int probes);
 

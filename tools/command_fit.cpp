@@ -2,22 +2,29 @@
 // cmfilter fit: a linear relighting model (PTM RGB or LRGB, HSH of order 2
 // or 3) fitted to every texel of an image stack in one solve, its images
 // streamed one at a time (docs/stacks.md), written as cmfilter's float
-// EXR, or as a .ptm or .rti that RTI viewers open.
+// EXR, or as a .ptm or .rti that RTI viewers open; or per-texel Lafortune
+// lobes (--model lafortune, lafortune-rgb) fitted to the stack held in
+// memory, written as cmfilter's float EXR.
 #include "command.h"
 
 #include "cmfilter/stack/fit_file.h"
 #include "cmfilter/stack/fit_loading.h"
 #include "cmfilter/stack/image_stack.h"
+#include "cmfilter/stack/lafortune_error.h"
+#include "cmfilter/stack/lafortune_file.h"
+#include "cmfilter/stack/lafortune_fit.h"
 #include "cmfilter/stack/linear_fit.h"
 #include "cmfilter/stack/ptm_file.h"
 #include "cmfilter/stack/relight_error.h"
 #include "cmfilter/stack/rti_file.h"
+#include "cmfilter/stack/stack_fit.h"
 #include "cmfilter/stack/streamed_fit.h"
 #include "cmfilter/util/atomic_output.h"
 #include "cmfilter/util/stopwatch.h"
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -36,6 +43,15 @@ struct FitArgs {
     std::string colorspace;
     std::string held_out;
     double singular_threshold = 1e-6;
+    // Lafortune lobes (LafortuneFitOptions).
+    std::string lobes = "2";  // N or "auto"
+    int max_lobes = 0;        // auto: the most (0: as many as the lights determine)
+    double tolerance = LafortuneFitOptions{}.tolerance;
+    double min_gain = LafortuneFitOptions{}.min_gain;
+    std::string view;
+    int slot = 0;
+    int max_iterations = LafortuneFitOptions{}.max_iterations;
+    double function_tolerance = LafortuneFitOptions{}.function_tolerance;
     std::string ocio_config;
     int threads = 0;
     bool no_error = false;
@@ -58,17 +74,32 @@ void print_error(const char* what, const RelightError& e)
               << e.delta_e.mean << ", p95 " << e.delta_e.p95 << ", max " << e.delta_e.max << "\n";
 }
 
-Status run(const FitArgs& args)
+// The options only one kind of model takes, refused with the other.
+constexpr const char* kLafortuneOnly[] = {"--lobes", "--max-lobes",      "--tolerance",         "--min-gain",
+                                          "--view",  "--max-iterations", "--function-tolerance"};
+constexpr const char* kLinearOnly[] = {"--singular-threshold"};
+
+Status run_lafortune(const FitArgs& args, const CLI::App& app, LafortuneVariant variant);
+
+Status run(const FitArgs& args, const CLI::App& app)
 {
     const FitFileFormat format = fit_file_format(args.output);
     const std::string ext = lowercase_extension(args.output);
     if (ext != ".exr" && ext != ".ptm" && ext != ".rti")
         return bad_input("-o '" + args.output + "': expected a .exr, .ptm or .rti file");
     if (auto st = check_output_path(args.output, ext); !st) return st;
+    if (args.model == "lafortune" || args.model == "lafortune-rgb")
+        return run_lafortune(args, app,
+                             args.model == "lafortune" ? LafortuneVariant::Luminance : LafortuneVariant::Rgb);
     auto model = parse_linear_model(args.model);
     if (!model)
-        return bad_input("--model '" + args.model +
-                         "' is not a linear model (expected ptm-rgb, ptm-lrgb, hsh2 or hsh3)");
+        return bad_input(
+            "--model '" + args.model +
+            "' is not a model cmfilter fits (expected ptm-rgb, ptm-lrgb, hsh2, hsh3, lafortune or lafortune-rgb)");
+    for (const char* flag : kLafortuneOnly)
+        if (app.count(flag))
+            return bad_input(std::string(flag) + " is an option of the Lafortune models (--model lafortune or " +
+                             "lafortune-rgb), not of " + args.model);
     const bool ptm = *model == LinearModel::PtmRgb || *model == LinearModel::PtmLrgb;
     if (format == FitFileFormat::Ptm && !ptm)
         return bad_input("--model " + args.model + " cannot be written as a .ptm (expected ptm-rgb or ptm-lrgb; " +
@@ -90,11 +121,14 @@ Status run(const FitArgs& args)
     auto config = load_color_config(args.ocio_config);
     if (!config) return config.error();
 
+    auto slot = resolve_stack_slot(args.stack, app.count("--slot") ? std::optional<int>(args.slot) : std::nullopt);
+    if (!slot) return slot.error();
+
     // The stack streamed: its images read and added to the fit one at a
     // time (streamed_fit.h), never all held.
     Stopwatch clock;
     StackLoadOptions load;
-    load.light_file = args.stack;
+    load.light_file = slot->light_file;
     load.colorspace = args.colorspace;
     load.encoding = encoding;
     load.threads = args.threads;
@@ -116,7 +150,7 @@ Status run(const FitArgs& args)
     PtmQuantisation quantisation;
     RtiQuantisation rti_quantisation;
     FitFileInfo info;
-    info.source = args.stack;
+    info.source = slot->light_file;
     Status written = ok();
     if (format == FitFileFormat::Ptm) written = write_ptm(written_path, *fit, &quantisation);
     else if (format == FitFileFormat::Rti) written = write_rti(written_path, *fit, &rti_quantisation);
@@ -185,17 +219,209 @@ Status run(const FitArgs& args)
     return ok();
 }
 
+// --lobes: a count, or "auto" (-1).
+constexpr int kAutoLobes = -1;
+Expected<int> parse_lobes(const std::string& text)
+{
+    if (text == "auto") return kAutoLobes;
+    if (text.empty() || text.size() > 3 || text.find_first_not_of("0123456789") != std::string::npos)
+        return bad_input("--lobes '" + text + "' is invalid (expected a lobe count or auto)");
+    return std::stoi(text);
+}
+
+std::string histogram_text(const std::vector<long long>& histogram)
+{
+    std::string text;
+    for (std::size_t n = 0; n < histogram.size(); ++n)
+        text += (n ? ", " : "") + std::to_string(n) + ": " + std::to_string(histogram[n]);
+    return text;
+}
+
+// Lafortune lobes (lafortune_fit.h): the stack loaded whole (the fit
+// refines every texel against all its lights), fitted, written to a
+// temporary file, measured from that file and moved into place last.
+Status run_lafortune(const FitArgs& args, const CLI::App& app, LafortuneVariant variant)
+{
+    const std::string ext = lowercase_extension(args.output);
+    if (ext != ".exr")
+        return bad_input("--model " + args.model + " cannot be written as a " + ext +
+                         ": Lafortune lobes go to an .exr (a .ptm holds PTMs, a .rti HSH)");
+    for (const char* flag : kLinearOnly)
+        if (app.count(flag))
+            return bad_input(std::string(flag) + " is an option of the linear models, not of " + args.model);
+    StackEncoding encoding = StackEncoding::SceneLinear;
+    if (args.encoding == "display") encoding = StackEncoding::DisplayEncoded;
+    else if (!args.encoding.empty() && args.encoding != "linear")
+        return bad_input("--encoding '" + args.encoding + "' is invalid (expected linear or display)");
+    auto lobes = parse_lobes(args.lobes);
+    if (!lobes) return lobes.error();
+    const bool auto_lobes = *lobes == kAutoLobes;
+    if (!auto_lobes)
+        for (const char* flag : {"--max-lobes", "--tolerance", "--min-gain"})
+            if (app.count(flag))
+                return bad_input(std::string(flag) + " chooses the lobe count per texel: it needs --lobes auto");
+
+    auto slot = resolve_stack_slot(args.stack, app.count("--slot") ? std::optional<int>(args.slot) : std::nullopt);
+    if (!slot) return slot.error();
+    Vec3 view{0, 0, 1};
+    if (slot->view) {
+        if (!args.view.empty())
+            return bad_input("--view cannot be given with the BTF manifest '" + args.stack +
+                             "': its view slot's direction is the fit's view (pick the slot with --slot K)");
+        view = *slot->view;
+    } else if (!args.view.empty()) {
+        auto parsed = parse_direction("--view", args.view);
+        if (!parsed) return parsed.error();
+        view = *parsed;
+    }
+
+    auto config = load_color_config(args.ocio_config);
+    if (!config) return config.error();
+    Stopwatch clock;
+    StackLoadOptions load;
+    load.light_file = slot->light_file;
+    load.colorspace = args.colorspace;
+    load.encoding = encoding;
+    load.threads = args.threads;
+    auto stack = load_image_stack(load, *config);
+    if (!stack) return stack.error();
+    const double read_seconds = clock.elapsed_ms() / 1000;
+
+    LafortuneFitOptions options;
+    options.variant = variant;
+    options.auto_lobes = auto_lobes;
+    // Auto without --max-lobes: as many as the lights determine (each lobe
+    // takes 4 parameters, rho_d one), at most the variant's.
+    const int most = max_lafortune_lobes(variant);
+    options.lobes = *lobes;
+    if (auto_lobes && !app.count("--max-lobes")) options.lobes = std::clamp((stack->count() - 1) / 4, 1, most);
+    else if (auto_lobes) {
+        if (args.max_lobes < 1 || args.max_lobes > most)
+            return bad_input("--max-lobes " + std::to_string(args.max_lobes) + " is invalid: a " + to_string(variant) +
+                             " fit takes 1 to " + std::to_string(most) + " lobes");
+        if (stack->count() < lafortune_scalar_parameters(args.max_lobes))
+            return bad_input("--max-lobes " + std::to_string(args.max_lobes) + " needs at least " +
+                             std::to_string(lafortune_scalar_parameters(args.max_lobes)) + " lights, but '" +
+                             load.light_file + "' has " + std::to_string(stack->count()));
+        options.lobes = args.max_lobes;
+    }
+    options.tolerance = args.tolerance;
+    options.min_gain = args.min_gain;
+    options.view = view;
+    options.max_iterations = args.max_iterations;
+    options.function_tolerance = args.function_tolerance;
+    options.threads = args.threads;
+    Stopwatch fit_clock;
+    auto fit = fit_lafortune(*stack, options);
+    if (!fit) return fit.error();
+    const double fit_seconds = fit_clock.elapsed_ms() / 1000;
+
+    auto staged = AtomicOutput::begin(args.output);
+    if (!staged) return staged.error();
+    const std::string written_path = staged->temp_path();
+    if (auto st = write_lafortune_exr(written_path, *fit, slot->light_file); !st) return st;
+    const double total_seconds = clock.elapsed_ms() / 1000;
+    const auto bytes = std::filesystem::file_size(written_path);
+
+    // The written file's own relighting error, at its fitted view.
+    auto stored = read_lafortune_exr(written_path);
+    if (!stored) return prefixed("reading back '" + args.output + "': ", stored.error());
+    std::optional<RelightError> training, held;
+    if (!args.no_error) {
+        auto e = lafortune_relight_error(*stored, *stack, *config, args.threads);
+        if (!e) return e.error();
+        training = *e;
+    }
+    if (!args.held_out.empty()) {
+        StackLoadOptions h = load;
+        h.light_file = args.held_out;
+        auto e = stack_fit_error(StackFit{*stored}, h, *config, args.threads);
+        if (!e) return e.error();
+        held = *e;
+    }
+    if (auto st = staged->commit(); !st) return st;
+
+    const std::vector<long long> histogram = fit->lobe_histogram();
+    if (args.json) {
+        nlohmann::json j;
+        j["output"] = args.output;
+        j["format"] = "exr";
+        j["model"] = args.model;
+        j["variant"] = to_string(variant);
+        j["size"] = {fit->width, fit->height};
+        j["channels"] = fit->channels;
+        j["lights"] = stack->count();
+        if (slot->slot) j["slot"] = *slot->slot;
+        j["view"] = {fit->view.x, fit->view.y, fit->view.z};
+        j["encoding"] = to_string(encoding);
+        j["bytes"] = bytes;
+        j["seconds"] = {{"read", read_seconds}, {"fit", fit_seconds}, {"total", total_seconds}};
+        j["lobes"] = fit->lobes;
+        j["auto_lobes"] = fit->auto_lobes;
+        j["lobe_histogram"] = histogram;
+        j["fallbacks"] = fit->fallbacks;
+        if (training) j["training_error"] = error_json(*training);
+        if (held) j["held_out_error"] = error_json(*held);
+        std::cout << j.dump(2) << "\n";
+    } else if (!args.quiet) {
+        std::cout << "wrote " << args.output << ": " << args.model << " fit, " << fit->width << " x " << fit->height
+                  << ", " << fit->channels << " channels, " << bytes << " bytes\n"
+                  << "  " << stack->count() << " lights, view (" << fit->view.x << ", " << fit->view.y << ", "
+                  << fit->view.z << ")" << (slot->slot ? ", slot " + std::to_string(*slot->slot) : "") << "\n"
+                  << "  " << (fit->auto_lobes ? "auto lobes, at most " : "") << fit->lobes << " lobe"
+                  << (fit->lobes == 1 ? "" : "s")
+                  << (variant == LafortuneVariant::Rgb ? " per channel" : " (luminance, times a base colour)") << "\n"
+                  << "  " << (variant == LafortuneVariant::Rgb ? "texel channels" : "texels")
+                  << " by lobe count: " << histogram_text(histogram) << "\n"
+                  << "  fallbacks " << fit->fallbacks << "\n"
+                  << "  values " << to_string(encoding) << "\n"
+                  << "  read " << read_seconds << " s, fit " << fit_seconds << " s, total " << total_seconds << " s\n";
+        if (training) print_error("training lights", *training);
+        if (held) print_error("held-out lights", *held);
+    }
+    return ok();
+}
+
 }  // namespace
 
 Command setup_fit(CLI::App& parent)
 {
     auto args = std::make_shared<FitArgs>();
     CLI::App* app = parent.add_subcommand(
-        "fit", "Fit a linear relighting model (PTM or HSH) to every texel of an image stack (docs/stacks.md)");
-    app->add_option("STACK", args->stack, "The stack's light file (.lp), its images beside it")->required();
-    app->add_option("--model", args->model, "ptm-rgb, ptm-lrgb, hsh2 or hsh3")->capture_default_str();
-    app->add_option("-o,--output", args->output, "Fit to write: .exr (float), .ptm (PTM 1.2) or .rti (HSH)")
+        "fit",
+        "Fit a relighting model (PTM, HSH or Lafortune lobes) to every texel of an image stack (docs/stacks.md)");
+    app->add_option("STACK", args->stack,
+                    "The stack's light file (.lp), its images beside it; or a BTF manifest (.json) and --slot")
         ->required();
+    app->add_option("--model", args->model, "ptm-rgb, ptm-lrgb, hsh2, hsh3, lafortune (luminance) or lafortune-rgb")
+        ->capture_default_str();
+    app->add_option("-o,--output", args->output,
+                    "Fit to write: .exr (float), .ptm (PTM 1.2) or .rti (HSH); Lafortune fits .exr only")
+        ->required();
+    app->add_option("--slot", args->slot, "With a BTF manifest: the view slot to fit (its lights and view)")
+        ->capture_default_str();
+    app->add_option("--lobes", args->lobes,
+                    "Lafortune: lobes per texel (luminance 1-7, rgb 1-2 per channel), or auto: per texel while "
+                    "they cut the error (--tolerance, --min-gain)")
+        ->capture_default_str();
+    app->add_option("--max-lobes", args->max_lobes,
+                    "Lafortune --lobes auto: the most lobes (default: as many as the lights determine, at most the "
+                    "variant's)");
+    app->add_option("--tolerance", args->tolerance,
+                    "Lafortune --lobes auto: the RMS at or below which no lobe is added (the stack's values)")
+        ->capture_default_str();
+    app->add_option("--min-gain", args->min_gain,
+                    "Lafortune --lobes auto: the least fraction of the RMS a lobe must cut to be kept")
+        ->capture_default_str();
+    app->add_option("--view", args->view,
+                    "Lafortune: the images' view direction x,y,z (default 0,0,1; a BTF manifest's slot gives it)");
+    app->add_option("--max-iterations", args->max_iterations,
+                    "Lafortune: Levenberg-Marquardt iterations per refinement")
+        ->capture_default_str();
+    app->add_option("--function-tolerance", args->function_tolerance,
+                    "Lafortune: Levenberg-Marquardt stops when a step changes the squared error by less than this "
+                    "fraction of it")
+        ->capture_default_str();
     app->add_option("--encoding", args->encoding,
                     "Values to fit: linear (scene-linear) or display (sRGB codes); default linear for .exr, "
                     "display for .ptm and .rti (which hold display-encoded 8-bit values)");
@@ -213,9 +439,18 @@ Command setup_fit(CLI::App& parent)
     app->add_flag("--json", args->json, "Print a machine-readable summary on stdout");
     app->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
     return {app,
-            [args] { return run(*args); },
+            [args, app] { return run(*args, *app); },
             {{"LinearFitOptions::singular_threshold", "--singular-threshold"},
              {"LinearFitOptions::model", "--model"},
+             {"LafortuneFitOptions::variant", "--model"},
+             {"LafortuneFitOptions::lobes", "--lobes"},
+             {"LafortuneFitOptions::auto_lobes", "--lobes auto"},
+             {"LafortuneFitOptions::tolerance", "--tolerance"},
+             {"LafortuneFitOptions::min_gain", "--min-gain"},
+             {"LafortuneFitOptions::view", "--view"},
+             {"LafortuneFitOptions::max_iterations", "--max-iterations"},
+             {"LafortuneFitOptions::function_tolerance", "--function-tolerance"},
+             {"LafortuneFitOptions::threads", "--threads"},
              {"StackLoadOptions::colorspace", "--colorspace"},
              {"StackLoadOptions::encoding", "--encoding"}}};
 }

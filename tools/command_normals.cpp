@@ -6,9 +6,9 @@
 #include "command.h"
 
 #include "cmfilter/io/rgb_image_file.h"
-#include "cmfilter/stack/fit_loading.h"
 #include "cmfilter/stack/fit_normals.h"
 #include "cmfilter/stack/normal_error.h"
+#include "cmfilter/stack/stack_fit.h"
 #include "cmfilter/util/atomic_output.h"
 
 #include <nlohmann/json.hpp>
@@ -16,6 +16,7 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <variant>
 
 namespace cmfilter::cli {
 
@@ -36,8 +37,16 @@ Status run(const NormalsArgs& args)
         return bad_input("normals needs -o NORMALS.exr, --reference TRUE_NORMALS.exr, or both");
     if (!args.output.empty())
         if (auto st = check_output_path(args.output, ".exr"); !st) return st;
-    auto fit = load_fit(args.fit);
-    if (!fit) return fit.error();
+    auto loaded = load_stack_fit(args.fit);
+    if (!loaded) return loaded.error();
+    // A Lafortune fit's brightest light is its highlight's, at the mirror
+    // direction of the view, not the normal that Malzbender's maximum gives
+    // for a diffuse surface.
+    const auto* fit = std::get_if<LinearFit>(&*loaded);
+    if (!fit)
+        return bad_input("'" + args.fit + "' is a " + stack_fit_model_name(*loaded) +
+                         " fit: normals takes a linear fit (PTM or HSH), whose brightest light is the normal of a "
+                         "diffuse surface; a Lafortune lobe's is its highlight's (fit a PTM or HSH to the same stack)");
     const FitNormals normals = fit_normals(*fit, args.threads);
     std::optional<ErrorSummary> error;
     if (!args.reference.empty()) {

@@ -29,7 +29,7 @@ fit_bad(five-lights 3 "five\\.lp' has 5 lights; a stack needs at least 6" five.l
 fit_bad(collinear 3 "collinear" collinear.lp)
 fit_bad(one-elevation 3 "one elevation, 30(\\.0)? degrees" elevation.lp)
 fit_bad(one-elevation-hsh 3 "one elevation" elevation.lp --model hsh3)
-fit_bad(model 3 "--model 'ptm' is not a linear model" good.lp --model ptm)
+fit_bad(model 3 "--model 'ptm' is not a model cmfilter fits" good.lp --model ptm)
 fit_bad(missing-lp 2 "no-such\\.lp" no-such.lp)
 fit_bad(threshold 3 "--singular-threshold" good.lp --singular-threshold -1)
 # A held-out stack that cannot be measured leaves no fit behind either.

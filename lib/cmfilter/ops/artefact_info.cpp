@@ -9,6 +9,7 @@
 #include "cmfilter/noise/noise_image.h"
 #include "cmfilter/noise/noise_sigma_table_file.h"
 #include "cmfilter/ops/stack_info.h"
+#include "cmfilter/stack/lafortune_file.h"
 
 #include <OpenImageIO/imageio.h>
 
@@ -98,7 +99,8 @@ Expected<ArtefactInfo> read_artefact_info(const std::string& path)
         return bad_input("'" + path +
                          "' is an image but not a cmfilter artefact (no cmfilter:kind "
                          "metadata)");
-    info.description = describe_kind(info.kind, info.width, info.height);
+    info.description = info.kind == kLafortuneFitKind ? describe_lafortune_fit(info)
+                                                      : describe_kind(info.kind, info.width, info.height);
     return info;
 }
 

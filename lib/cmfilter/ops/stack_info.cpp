@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -127,6 +128,33 @@ std::string describe_linear_fit(int width, int height)
            "al. 2004): " +
            std::to_string(width) + " x " + std::to_string(height) +
            ", one float channel per coefficient (cmfilter:model), unquantised";
+}
+
+std::string describe_lafortune_fit(const ArtefactInfo& info)
+{
+    auto parameter = [&](const std::string& key) -> std::string {
+        for (const auto& [k, v] : info.parameters)
+            if (k == key) return v;
+        return "?";
+    };
+    auto coordinate = [&](const std::string& key) {
+        const std::string text = parameter(key);
+        char* end = nullptr;
+        const double v = std::strtod(text.c_str(), &end);
+        return end != text.c_str() ? number(v) : text;
+    };
+    const bool rgb = parameter("variant") == "rgb";
+    const std::string lobes = parameter("lobes");
+    return std::string("per-texel Lafortune lobes of an image stack (cmfilter fit --model ") +
+           (rgb ? "lafortune-rgb" : "lafortune") +
+           "; Lafortune et al. 1997, per texel McAllister et al. 2002): " + std::to_string(info.width) + " x " +
+           std::to_string(info.height) + ", " +
+           (rgb ? "variant rgb, a diffuse term and " : "variant luminance, a diffuse term and ") +
+           (parameter("auto_lobes") == "1" ? "at most " + lobes + " lobes chosen per texel"
+                                           : lobes + (lobes == "1" ? " lobe" : " lobes")) +
+           (rgb ? " per channel" : " times a base colour") + ", fitted at the view (" + coordinate("view_x") + ", " +
+           coordinate("view_y") + ", " + coordinate("view_z") +
+           "); each lobe's stored axis a = (Cx vx, Cy vy, Cz vz) and exponent n, one float channel per parameter";
 }
 
 std::optional<Expected<ArtefactInfo>> read_stack_file_info(const std::string& path)

@@ -22,4 +22,9 @@ std::optional<Expected<ArtefactInfo>> read_stack_file_info(const std::string& pa
 // The description of a cmfilter linear-fit EXR (fit_file.h) of size w x h.
 std::string describe_linear_fit(int width, int height);
 
+// The description of a cmfilter lafortune-fit EXR (lafortune_file.h) from
+// the info read of it (its size and the parameters cmfilter:variant,
+// lobes, auto_lobes, view_x, view_y, view_z).
+std::string describe_lafortune_fit(const ArtefactInfo& info);
+
 }  // namespace cmfilter

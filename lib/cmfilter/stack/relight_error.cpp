@@ -27,12 +27,12 @@ struct LightError {
     double delta_e_mean = 0;
 };
 
-Expected<LightError> light_error(const LinearFit& fit, const Vec3& light, const float* image, StackEncoding encoding,
+Expected<LightError> light_error(const RelitModel& fit, const Vec3& light, const float* image, StackEncoding encoding,
                                  const ColorConfig& config, double* delta_e)
 {
     const std::size_t texels = fit.texels();
     const int ch = fit.channels;
-    std::vector<float> model = relight(fit, light, 1);
+    std::vector<float> model = fit.relight(light);
     std::vector<float> truth(image, image + texels * ch);
     if (auto st = convert_stack_encoding(model, ch, fit.encoding, StackEncoding::SceneLinear, config); !st)
         return st.error();
@@ -55,11 +55,11 @@ Expected<LightError> light_error(const LinearFit& fit, const Vec3& light, const 
     return out;
 }
 
-Status check_same_shape(const LinearFit& fit, const std::string& light_file, int width, int height, int channels)
+Status check_same_shape(const RelitModel& fit, const std::string& light_file, int width, int height, int channels)
 {
     if (fit.width != width || fit.height != height || fit.channels != channels) {
         std::ostringstream msg;
-        msg << "the fit is " << fit.width << "x" << fit.height << " with " << fit.channels
+        msg << fit.what << " is " << fit.width << "x" << fit.height << " with " << fit.channels
             << " channels but the stack '" << light_file << "' is " << width << "x" << height << " with " << channels
             << "; expected the same size and channels";
         return bad_input(msg.str());
@@ -69,8 +69,31 @@ Status check_same_shape(const LinearFit& fit, const std::string& light_file, int
 
 }  // namespace
 
+RelitModel linear_relit_model(const LinearFit& fit)
+{
+    RelitModel model;
+    model.width = fit.width;
+    model.height = fit.height;
+    model.channels = fit.channels;
+    model.encoding = fit.encoding;
+    model.relight = [&fit](const Vec3& light) { return relight(fit, light, 1); };
+    return model;
+}
+
 Expected<RelightError> relight_error(const LinearFit& fit, const ImageStack& reference, const ColorConfig& config,
                                      int threads)
+{
+    return relit_model_error(linear_relit_model(fit), reference, config, threads);
+}
+
+Expected<RelightError> relight_error_from_files(const LinearFit& fit, const StackLoadOptions& reference,
+                                                const ColorConfig& config, int threads)
+{
+    return relit_model_error_from_files(linear_relit_model(fit), reference, config, threads);
+}
+
+Expected<RelightError> relit_model_error(const RelitModel& fit, const ImageStack& reference, const ColorConfig& config,
+                                         int threads)
 {
     if (auto st = check_same_shape(fit, reference.light_file, reference.width, reference.height, reference.channels);
         !st)
@@ -106,8 +129,8 @@ Expected<RelightError> relight_error(const LinearFit& fit, const ImageStack& ref
     return out;
 }
 
-Expected<RelightError> relight_error_from_files(const LinearFit& fit, const StackLoadOptions& reference,
-                                                const ColorConfig& config, int threads)
+Expected<RelightError> relit_model_error_from_files(const RelitModel& fit, const StackLoadOptions& reference,
+                                                    const ColorConfig& config, int threads)
 {
     auto light_file = read_light_file(reference.light_file);
     if (!light_file) return light_file.error();

@@ -13,6 +13,8 @@
 #include "cmfilter/stack/linear_fit.h"
 #include "cmfilter/util/error.h"
 
+#include <functional>
+#include <string>
 #include <vector>
 
 namespace cmfilter {
@@ -24,6 +26,31 @@ struct RelightError {
     std::vector<double> light_rmse;     // per light, in the stack's order
     std::vector<double> light_delta_e;  // mean CIEDE2000 per light
 };
+
+// Any relighting model as the errors measure it: its size and channels,
+// the values it reproduces, and its image at a light (width * height *
+// channels floats in `encoding`, row-major, top row first), computed on the
+// calling thread (the errors run one light per thread). `what` names it in
+// messages ("the fit", "the Lafortune fit").
+struct RelitModel {
+    int width = 0, height = 0, channels = 0;
+    StackEncoding encoding = StackEncoding::SceneLinear;
+    std::function<std::vector<float>(const Vec3& light)> relight;
+    std::string what = "the fit";
+    std::size_t texels() const { return static_cast<std::size_t>(width) * height; }
+};
+
+// A linear fit as a RelitModel (relight(fit, light, 1)); holds a reference
+// to `fit`.
+RelitModel linear_relit_model(const LinearFit& fit);
+
+// BadInput when the model and the stack differ in size or channels.
+Expected<RelightError> relit_model_error(const RelitModel& model, const ImageStack& reference,
+                                         const ColorConfig& config, int threads = 0);
+// relit_model_error streamed from the stack's files, as
+// relight_error_from_files below streams them.
+Expected<RelightError> relit_model_error_from_files(const RelitModel& model, const StackLoadOptions& reference,
+                                                    const ColorConfig& config, int threads = 0);
 
 // BadInput when the fit and the stack differ in size or channels.
 Expected<RelightError> relight_error(const LinearFit& fit, const ImageStack& reference, const ColorConfig& config,
