@@ -2,6 +2,7 @@
 #include "cmfilter/stack/lafortune_fit.h"
 
 #include "cmfilter/stack/lafortune_scalar_fit.h"
+#include "cmfilter/stack/light_density.h"
 #include "cmfilter/stack/linear_model.h"
 #include "cmfilter/util/parallel_for.h"
 
@@ -22,7 +23,7 @@ std::string number(double v)
 
 // One scalar's fit as the model's floats (rho_d, then ax, ay, az, n per
 // slot; unused slots (0, 0, 0, 1)); the lobes used.
-int store_scalar(const ScalarLobeFit& fit, int slots, float* out)
+int store_scalar(const ScalarLobeFit& fit, int slots, double max_exponent, float* out)
 {
     out[0] = static_cast<float>(fit.rho);
     int used = 0;
@@ -31,7 +32,7 @@ int store_scalar(const ScalarLobeFit& fit, int slots, float* out)
         lobe[0] = lobe[1] = lobe[2] = 0;
         lobe[3] = 1;
         if (i >= static_cast<int>(fit.shapes.size()) || !(fit.scales[i] > 0)) continue;
-        const double n = lobe_shape_exponent(fit.shapes[i]);
+        const double n = lobe_shape_exponent(fit.shapes[i], max_exponent);
         const Vec3 a = std::pow(fit.scales[i], 1 / n) * lobe_shape_axis(fit.shapes[i]);
         lobe[0] = static_cast<float>(a.x);
         lobe[1] = static_cast<float>(a.y);
@@ -42,7 +43,37 @@ int store_scalar(const ScalarLobeFit& fit, int slots, float* out)
     return used;
 }
 
+// The lights' weights for one scalar: the density weights times
+// 1 / (value + epsilon)^2 (relative_epsilon > 0), scaled to mean 1.
+void relative_weights(const std::vector<double>& density, const double* values, double epsilon,
+                      std::vector<double>* out)
+{
+    const std::size_t K = density.size();
+    out->resize(K);
+    double sum = 0;
+    for (std::size_t k = 0; k < K; ++k) {
+        const double d = std::max(0.0, values[k]) + epsilon;
+        (*out)[k] = density[k] / (d * d);
+        sum += (*out)[k];
+    }
+    for (double& w : *out) w *= K / sum;
+}
+
+constexpr double kPi = 3.14159265358979323846;
+
 }  // namespace
+
+double lafortune_max_exponent(const std::vector<Vec3>& lights, const LafortuneFitOptions& options)
+{
+    if (!(options.spacing_cap > 0)) return kLafortuneMaxExponent;
+    const double n = exponent_for_lobe_width(options.spacing_cap * mean_light_spacing(lights));
+    return std::clamp(n, 2.0, kLafortuneMaxExponent);
+}
+
+std::vector<double> lafortune_light_weights(const std::vector<Vec3>& lights, const LafortuneFitOptions& options)
+{
+    return light_density_weights(lights, options.density_radius * kPi / 180);
+}
 
 Expected<LafortuneFit> fit_lafortune(const ImageStack& stack, const LafortuneFitOptions& options)
 {
@@ -73,6 +104,22 @@ Expected<LafortuneFit> fit_lafortune(const ImageStack& stack, const LafortuneFit
         return bad_input("LafortuneFitOptions::function_tolerance " + number(options.function_tolerance) +
                              " is invalid: expected a fraction in (0, 1)",
                          "LafortuneFitOptions::function_tolerance");
+    if (!(options.density_radius >= 0 && options.density_radius <= 90))
+        return bad_input("LafortuneFitOptions::density_radius " + number(options.density_radius) +
+                             " is invalid: expected an angle in degrees in [0, 90] (0: no density weights)",
+                         "LafortuneFitOptions::density_radius");
+    if (!(std::isfinite(options.spacing_cap) && options.spacing_cap >= 0))
+        return bad_input("LafortuneFitOptions::spacing_cap " + number(options.spacing_cap) +
+                             " is invalid: expected a multiple of the light spacing >= 0 (0: no cap)",
+                         "LafortuneFitOptions::spacing_cap");
+    if (!(std::isfinite(options.exponent_penalty) && options.exponent_penalty >= 0))
+        return bad_input("LafortuneFitOptions::exponent_penalty " + number(options.exponent_penalty) +
+                             " is invalid: expected a fraction >= 0 (0: no penalty)",
+                         "LafortuneFitOptions::exponent_penalty");
+    if (!(std::isfinite(options.relative_epsilon) && options.relative_epsilon >= 0))
+        return bad_input("LafortuneFitOptions::relative_epsilon " + number(options.relative_epsilon) +
+                             " is invalid: expected a value >= 0 (0: no relative weighting)",
+                         "LafortuneFitOptions::relative_epsilon");
     const int needed = lafortune_scalar_parameters(options.lobes);
     if (stack.count() < needed)
         return bad_input("LafortuneFitOptions::lobes " + std::to_string(options.lobes) + " needs at least " +
@@ -113,8 +160,13 @@ Expected<LafortuneFit> fit_lafortune(const ImageStack& stack, const LafortuneFit
     fit.parameters.assign(texels * fit.stride(), 0.0f);
     fit.lobe_counts.assign(texels * scalars, 0);
 
-    const LobeLights lights(stack.lights);
+    const std::vector<double> density = lafortune_light_weights(stack.lights, options);
+    const LobeLights lights(stack.lights, density);
+    const bool relative = options.relative_epsilon > 0;
+    const double max_exponent = lafortune_max_exponent(stack.lights, options);
     ScalarLobeSettings settings;
+    settings.max_exponent = max_exponent;
+    settings.exponent_penalty = options.exponent_penalty;
     settings.lobes = options.lobes;
     settings.auto_lobes = options.auto_lobes;
     settings.tolerance = options.tolerance;
@@ -123,7 +175,13 @@ Expected<LafortuneFit> fit_lafortune(const ImageStack& stack, const LafortuneFit
     settings.function_tolerance = options.function_tolerance;
     std::vector<long long> row_fallbacks(stack.height, 0);
     parallel_for(stack.height, options.threads, [&](int row) {
-        std::vector<double> values(K), colour(static_cast<std::size_t>(K) * ch);
+        std::vector<double> values(K), colour(static_cast<std::size_t>(K) * ch), weights;
+        // The lights with this scalar's relative weights (when asked for).
+        auto fit_values = [&]() {
+            if (!relative) return fit_scalar_lobes(lights, values.data(), settings);
+            relative_weights(density, values.data(), options.relative_epsilon, &weights);
+            return fit_scalar_lobes(LobeLights(stack.lights, weights), values.data(), settings);
+        };
         for (int x = 0; x < stack.width; ++x) {
             const std::size_t t = static_cast<std::size_t>(row) * stack.width + x;
             for (int k = 0; k < K; ++k)
@@ -132,10 +190,10 @@ Expected<LafortuneFit> fit_lafortune(const ImageStack& stack, const LafortuneFit
             if (!luminance) {
                 for (int c = 0; c < ch; ++c) {
                     for (int k = 0; k < K; ++k) values[k] = colour[k * ch + c];
-                    const ScalarLobeFit s = fit_scalar_lobes(lights, values.data(), settings);
+                    const ScalarLobeFit s = fit_values();
                     row_fallbacks[row] += s.fallbacks;
-                    fit.lobe_counts[t * ch + c] =
-                        static_cast<unsigned char>(store_scalar(s, fit.lobes, out + c * fit.scalar_stride()));
+                    fit.lobe_counts[t * ch + c] = static_cast<unsigned char>(
+                        store_scalar(s, fit.lobes, max_exponent, out + c * fit.scalar_stride()));
                 }
                 continue;
             }
@@ -145,9 +203,9 @@ Expected<LafortuneFit> fit_lafortune(const ImageStack& stack, const LafortuneFit
                                 ? I[0]
                                 : kRec709Luminance[0] * I[0] + kRec709Luminance[1] * I[1] + kRec709Luminance[2] * I[2];
             }
-            const ScalarLobeFit s = fit_scalar_lobes(lights, values.data(), settings);
+            const ScalarLobeFit s = fit_values();
             row_fallbacks[row] += s.fallbacks;
-            fit.lobe_counts[t] = static_cast<unsigned char>(store_scalar(s, fit.lobes, out));
+            fit.lobe_counts[t] = static_cast<unsigned char>(store_scalar(s, fit.lobes, max_exponent, out));
             // The base colour (lafortune_model.h): least squares for the
             // fitted luminance, as PTM-LRGB's.
             double fitted2 = 0, measured2 = 0, mean_y = 0;

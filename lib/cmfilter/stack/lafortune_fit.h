@@ -10,6 +10,23 @@
 // kept only if it cuts that RMS by more than LafortuneFitOptions::min_gain
 // of the RMS without it: no more lobes than the texel needs, at most
 // LafortuneFitOptions::lobes.
+//
+// Uneven domes (the second paper, sec. 5: Levenberg-Marquardt "produce[s]
+// visual artifacts" where "the sampling over the hemisphere is often not
+// evenly spread"): sharp lobes placed between lights fit the images and fail
+// at every other light. Four remedies, each off at 0 (measured in
+// docs/lafortune-artefacts.md):
+//   density_radius     weights each light by 1 / (lights within this angle)
+//                      (light_density.h): a dense cluster counts as one
+//                      light of an even dome would, the light set resampled;
+//   spacing_cap        caps every exponent so the lobe's full width at half
+//                      maximum is at least this multiple of the lights' mean
+//                      nearest-neighbour spacing (light_density.h): a lobe
+//                      narrower than the gaps is not determined by them;
+//   exponent_penalty   a prior towards broad lobes (lafortune_scalar_fit.h);
+//   relative_epsilon   weights texel value k by 1 / (value_k + epsilon)^2
+//                      (with the density weights, scaled to mean 1): dark
+//                      values fitted relatively, as CIEDE2000 sees them.
 #pragma once
 
 #include "cmfilter/stack/image_stack.h"
@@ -36,6 +53,21 @@ struct LafortuneFitOptions {
     // Levenberg-Marquardt stops when a step changes the texel's squared
     // error by less than this fraction of it; in (0, 1).
     double function_tolerance = 1e-4;
+    // The light-density weights' radius in degrees, in [0, 90]; 0: every
+    // light weighs 1.
+    double density_radius = 0;
+    // The exponent cap's multiple of the mean light spacing, >= 0; 0: no cap
+    // (exponents up to kLafortuneMaxExponent). The cap is at least 2. The
+    // default 2 (lobes at least twice as wide as the gaps between lights)
+    // removed the artefacts on every measured dome
+    // (docs/lafortune-artefacts.md); lobes sharper than that, exactly
+    // recoverable from noise-free images, need 0.
+    double spacing_cap = 2;
+    // The exponent penalty's fraction of the texel's energy, >= 0
+    // (ScalarLobeSettings::exponent_penalty); 0: none.
+    double exponent_penalty = 0;
+    // The relative weighting's epsilon (the stack's values), >= 0; 0: none.
+    double relative_epsilon = 0;
     int threads = 0;  // 0: all cores
 };
 
@@ -48,12 +80,23 @@ constexpr int lafortune_scalar_parameters(int lobes) { return 1 + 4 * lobes; }
 // auto_lobes (::tolerance); min_gain outside [0, 1) (::min_gain); a view
 // not finite, of zero length, or at or below the horizon (::view);
 // max_iterations < 1 (::max_iterations); function_tolerance outside (0, 1)
-// (::function_tolerance); fewer lights than
+// (::function_tolerance); density_radius outside [0, 90], spacing_cap,
+// exponent_penalty or relative_epsilon negative or not finite (each by its
+// name); fewer lights than
 // lafortune_scalar_parameters(lobes) (::lobes: fewer lobes may fit, the
 // rule a scalar's parameters to be determined by as many values); an Rgb
 // fit of a stack with other than 3 channels, a Luminance fit of other than
 // 1 or 3 (::variant); a stack whose sizes and pixel count disagree.
 Expected<LafortuneFit> fit_lafortune(const ImageStack& stack, const LafortuneFitOptions& options);
+
+// The most exponent the options allow for these lights: kLafortuneMaxExponent
+// without a spacing cap, else exponent_for_lobe_width(spacing_cap x the
+// mean light spacing) within [2, kLafortuneMaxExponent].
+double lafortune_max_exponent(const std::vector<Vec3>& lights, const LafortuneFitOptions& options);
+
+// The per-light weights the fit gives the lights before any relative
+// weighting: light_density_weights(lights, density_radius in radians).
+std::vector<double> lafortune_light_weights(const std::vector<Vec3>& lights, const LafortuneFitOptions& options);
 
 // The model at light `light` (unit, z >= 0) and view `view` (unit, z > 0;
 // the fitted view unless told) for every texel: width * height * channels

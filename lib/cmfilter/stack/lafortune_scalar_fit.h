@@ -22,6 +22,7 @@
 #pragma once
 
 #include "cmfilter/math/vec3.h"
+#include "cmfilter/stack/lafortune_model.h"
 
 #include <vector>
 
@@ -34,15 +35,21 @@ struct LobeShape {
 };
 
 // The shape with the given axis (z > 0 taken; below that, near the horizon)
-// and exponent (clamped inside the bounds).
-LobeShape lobe_shape(const Vec3& axis, double exponent);
+// and exponent (clamped inside [kLafortuneMinExponent, max_exponent]). With
+// a smaller most exponent N (ScalarLobeSettings::max_exponent) the exponent
+// is exp(ln(N) sigmoid(t)): the same t maps into the narrower range.
+LobeShape lobe_shape(const Vec3& axis, double exponent, double max_exponent = kLafortuneMaxExponent);
 Vec3 lobe_shape_axis(const LobeShape& shape);  // unit
-double lobe_shape_exponent(const LobeShape& shape);
+double lobe_shape_exponent(const LobeShape& shape, double max_exponent = kLafortuneMaxExponent);
 
-// The lights of a fit, as the solver reads them.
+// The lights of a fit, as the solver reads them, with a weight per light
+// (missing weights: 1): the fit minimises sum_k w_k (model_k - value_k)^2,
+// its rows scaled by root_weight = sqrt(w_k); gain = uz root_weight, the
+// factor of the model's columns. With every weight 1 the fit is the
+// unweighted one, bit for bit.
 struct LobeLights {
-    std::vector<double> ux, uy, uz;
-    explicit LobeLights(const std::vector<Vec3>& lights);
+    std::vector<double> ux, uy, uz, root_weight, gain;
+    explicit LobeLights(const std::vector<Vec3>& lights, const std::vector<double>& weights = {});
     int count() const { return static_cast<int>(uz.size()); }
 };
 
@@ -58,22 +65,33 @@ struct ScalarLobeSettings {
     // Levenberg-Marquardt stops when a step changes the cost by less than
     // this fraction of it.
     double function_tolerance = 1e-4;
+    // The most exponent a lobe may take, in (kLafortuneMinExponent,
+    // kLafortuneMaxExponent] (the exponent cap by the light spacing,
+    // lafortune_fit.h).
+    double max_exponent = kLafortuneMaxExponent;
+    // A prior towards broad lobes: the cost minimised is the (weighted) SSE
+    // plus, per lobe, P (ln n_i / ln kLafortuneMaxExponent)^2 with P this
+    // fraction of the scalar's energy sum_k w_k value_k^2 (a lobe at the
+    // largest exponent costs that fraction of the signal); 0: none. Auto
+    // lobes and `sse` still judge the data alone.
+    double exponent_penalty = 0;
 };
 
 struct ScalarLobeFit {
     double rho = 0;
     std::vector<LobeShape> shapes;
     std::vector<double> scales;  // s_i >= 0
-    double sse = 0;              // sum of squared residuals over the lights
+    double sse = 0;              // sum of (weighted) squared residuals over the lights
+    double penalty = 0;          // the exponent penalty's cost (0 without one)
     int fallbacks = 0;           // refinements discarded for their start
 };
 
-// rho_d and the scales (non-negative) for fixed shapes; the SSE.
+// rho_d and the scales (non-negative) for fixed shapes; the (weighted) SSE.
 double solve_lobe_scales(const LobeLights& lights, const double* values, const std::vector<LobeShape>& shapes,
-                         double* rho, std::vector<double>* scales);
+                         double* rho, std::vector<double>* scales, double max_exponent = kLafortuneMaxExponent);
 
 // Levenberg-Marquardt from `start` (all lobes refined together), with the
-// fallback above.
+// fallback above (judged by the SSE plus the penalty).
 ScalarLobeFit refine_lobes(const LobeLights& lights, const double* values, const std::vector<LobeShape>& start,
                            const ScalarLobeSettings& settings);
 
