@@ -145,7 +145,7 @@ TEST_CASE("Lambda of a sawtooth's slopes takes the slopes rising along the view'
     }
 }
 
-TEST_CASE("the height CDF of Gaussian texels is Phi; ties take their mid rank; a flat surface never masks")
+TEST_CASE("the height CDF of Gaussian texels is Phi, ties take their mid rank, a flat surface never masks")
 {
     const GaussianTexels t = gaussian_texels(128, 0.2, 0.3, 0.3, 0);
     const DisplacementMasking m = DisplacementMasking::from_texels(t.h, t.sx, t.sy, 128);

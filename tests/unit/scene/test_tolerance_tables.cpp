@@ -101,7 +101,7 @@ TEST_CASE("a surface's fitted table covers its driver's sigma range and meets th
     CHECK(m.plain.largest() > 0);
 }
 
-TEST_CASE("the scene's colormap tolerance fits as the option does; the option 0 keeps the fixed table")
+TEST_CASE("the scene's colormap tolerance fits as the option does, the option 0 keeps the fixed table")
 {
     auto scene = load_scene(kScene);
     REQUIRE(scene);

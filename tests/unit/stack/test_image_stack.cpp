@@ -119,7 +119,7 @@ TEST_CASE("image stack: too few lights, a missing image, sizes and channels that
     CHECK(missing.error().message.find("missing-2.png") != std::string::npos);
 }
 
-TEST_CASE("image stack: display-encoded values are named by the config's sRGB space; data cannot be encoded")
+TEST_CASE("image stack: display-encoded values are named by the config's sRGB space, data cannot be encoded")
 {
     const auto config = cmfilter_test::builtin_color_config();
     StackLoadOptions options;

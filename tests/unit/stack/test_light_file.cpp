@@ -52,7 +52,7 @@ TEST_CASE("light file: names, normalised directions and paths relative to the fi
     CHECK(f->image_path(2) == "/abs/img_2.png");
 }
 
-TEST_CASE("light file: names may hold spaces; a line with a number too many is malformed")
+TEST_CASE("light file: names may hold spaces, a line with a number too many is malformed")
 {
     auto f = read_light_file(write_text("spaces.lp", "2\nmy img 0.5.png 0.5 0.5 0.7\nb c.png\t0 0 1\n"));
     REQUIRE(f);

@@ -192,7 +192,7 @@ TEST_CASE("ptm: PTM_FORMAT_RGB written and read back is within half a quantisati
     CHECK(q.max_value_error > 0);
 }
 
-TEST_CASE("ptm: PTM_FORMAT_LRGB moves the base colour's largest channel into the polynomial; relit values kept")
+TEST_CASE("ptm: PTM_FORMAT_LRGB moves the base colour's largest channel into the polynomial, relit values kept")
 {
     std::mt19937_64 rng(29);
     const LinearFit fit = random_fit(LinearModel::PtmLrgb, 6, 4, rng);

@@ -192,7 +192,7 @@ TEST_CASE("streamed fit: the same coefficients for any thread count, and progres
     CHECK(fractions.back() == 1.0);
 }
 
-TEST_CASE("streamed fit: the light set is refused before any image is read; the images checked as loaded")
+TEST_CASE("streamed fit: the light set is refused before any image is read, the images checked as loaded")
 {
     const auto config = cmfilter_test::builtin_color_config();
     LinearFitOptions options;
