@@ -52,6 +52,10 @@ struct FitArgs {
     int slot = 0;
     int max_iterations = LafortuneFitOptions{}.max_iterations;
     double function_tolerance = LafortuneFitOptions{}.function_tolerance;
+    double spacing_cap = LafortuneFitOptions{}.spacing_cap;
+    double exponent_penalty = LafortuneFitOptions{}.exponent_penalty;
+    double density_radius = LafortuneFitOptions{}.density_radius;
+    double relative_epsilon = LafortuneFitOptions{}.relative_epsilon;
     std::string ocio_config;
     int threads = 0;
     bool no_error = false;
@@ -75,8 +79,10 @@ void print_error(const char* what, const RelightError& e)
 }
 
 // The options only one kind of model takes, refused with the other.
-constexpr const char* kLafortuneOnly[] = {"--lobes", "--max-lobes",      "--tolerance",         "--min-gain",
-                                          "--view",  "--max-iterations", "--function-tolerance"};
+constexpr const char* kLafortuneOnly[] = {
+    "--lobes",           "--max-lobes",          "--tolerance",   "--min-gain",         "--view",
+    "--max-iterations",  "--function-tolerance", "--spacing-cap", "--exponent-penalty", "--density-radius",
+    "--relative-epsilon"};
 constexpr const char* kLinearOnly[] = {"--singular-threshold"};
 
 Status run_lafortune(const FitArgs& args, const CLI::App& app, LafortuneVariant variant);
@@ -310,6 +316,10 @@ Status run_lafortune(const FitArgs& args, const CLI::App& app, LafortuneVariant 
     options.view = view;
     options.max_iterations = args.max_iterations;
     options.function_tolerance = args.function_tolerance;
+    options.spacing_cap = args.spacing_cap;
+    options.exponent_penalty = args.exponent_penalty;
+    options.density_radius = args.density_radius;
+    options.relative_epsilon = args.relative_epsilon;
     options.threads = args.threads;
     Stopwatch fit_clock;
     auto fit = fit_lafortune(*stack, options);
@@ -422,6 +432,20 @@ Command setup_fit(CLI::App& parent)
                     "Lafortune: Levenberg-Marquardt stops when a step changes the squared error by less than this "
                     "fraction of it")
         ->capture_default_str();
+    app->add_option("--spacing-cap", args->spacing_cap,
+                    "Lafortune: no lobe narrower (full width at half maximum) than this many times the lights' mean "
+                    "spacing (docs/lafortune-artefacts.md); 0: no cap")
+        ->capture_default_str();
+    app->add_option("--exponent-penalty", args->exponent_penalty,
+                    "Lafortune: a prior towards broad lobes, the weight of the log-exponent penalty; 0: none")
+        ->capture_default_str();
+    app->add_option("--density-radius", args->density_radius,
+                    "Lafortune: weight each light by 1 / (lights within this many degrees), so an uneven dome "
+                    "counts like an even one; 0: every light alike")
+        ->capture_default_str();
+    app->add_option("--relative-epsilon", args->relative_epsilon,
+                    "Lafortune: weight each value by 1 / (value + this)^2, fitting dark texels relatively; 0: none")
+        ->capture_default_str();
     app->add_option("--encoding", args->encoding,
                     "Values to fit: linear (scene-linear) or display (sRGB codes); default linear for .exr, "
                     "display for .ptm and .rti (which hold display-encoded 8-bit values)");
@@ -451,6 +475,10 @@ Command setup_fit(CLI::App& parent)
              {"LafortuneFitOptions::max_iterations", "--max-iterations"},
              {"LafortuneFitOptions::function_tolerance", "--function-tolerance"},
              {"LafortuneFitOptions::threads", "--threads"},
+             {"LafortuneFitOptions::spacing_cap", "--spacing-cap"},
+             {"LafortuneFitOptions::exponent_penalty", "--exponent-penalty"},
+             {"LafortuneFitOptions::density_radius", "--density-radius"},
+             {"LafortuneFitOptions::relative_epsilon", "--relative-epsilon"},
              {"StackLoadOptions::colorspace", "--colorspace"},
              {"StackLoadOptions::encoding", "--encoding"}}};
 }

@@ -89,7 +89,7 @@ const std::vector<Vec3> kLights = {normalize(Vec3{0.2, 0.1, 0.9}),   normalize(V
 
 }  // namespace
 
-TEST_CASE("stack fit: a Lafortune EXR and a linear EXR told apart by kind; another kind refused")
+TEST_CASE("stack fit: a Lafortune EXR and a linear EXR told apart by kind, another kind refused")
 {
     const std::string lafortune_path = kDir + "/lafortune.exr";
     const std::string linear_path = kDir + "/linear.exr";
@@ -135,7 +135,7 @@ TEST_CASE("stack fit: a Lafortune EXR and a linear EXR told apart by kind; anoth
     CHECK(missing.error().kind == ErrorKind::Io);
 }
 
-TEST_CASE("stack fit: a Lafortune fit relit at its view and at others is the paper's formula; a PTM holds one view")
+TEST_CASE("stack fit: a Lafortune fit relit at its view and at others is the paper's formula, a PTM holds one view")
 {
     const StackFit fit{paper_fit()};
     const Vec3 views[] = {kFittedView, normalize(Vec3{0, 0, 1}), normalize(Vec3{-0.5, 0.2, 0.6}),
