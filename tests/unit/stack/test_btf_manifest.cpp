@@ -52,6 +52,9 @@ TEST_CASE("BTF manifest: bad manifests name the value")
               .find("/views/0/view: expected a view direction above the surface") != std::string::npos);
     CHECK(error_of(R"({"format": "cmfilter-btf", "version": 1, "views": [{"lights": "a.lp", "view": [0, 0, 0]}]})")
               .find("nonzero") != std::string::npos);
+    // A view slot without its view direction.
+    CHECK(error_of(R"({"format": "cmfilter-btf", "version": 1, "views": [{"lights": "a.lp"}]})")
+              .find("/views/0/view: required key is missing") != std::string::npos);
     CHECK(error_of(R"({"format": "cmfilter-btf", "version": 1, "views": [{"view": [0, 0, 1]}]})")
               .find("/views/0/lights: required key is missing") != std::string::npos);
 }
