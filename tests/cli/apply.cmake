@@ -64,6 +64,7 @@ cmfilter_apply_case(NAME usage.missing-lod EXIT 1 STDERR "^cmfilter apply: error
 cmfilter_apply_case(NAME warn.partial-overlap EXIT 0
                     STDERR "warning: 110 of the driver's texels \\(10\\.7421875%\\) lie outside the domain \\[0, 1\\]"
                     COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod 2 -o ${OUT}/apply-partial.exr)
+set_tests_properties(cli.apply.warn.partial-overlap PROPERTIES FIXTURES_SETUP apply_partial)
 cmfilter_apply_case(NAME warn.lod-below EXIT 0
                     STDERR "warning: --lod -1 is outside \\[0, 5\\] for '.*apply-moments\\.exr' \\(32 x 32\\); clamped to 0"
                     STDOUT "gaussian, 32 x 32 at lod 0 \\(asked -1\\)"
@@ -93,7 +94,9 @@ cmfilter_apply_case(NAME json EXIT 0 STDOUT "\"sigma_clamped\": [0-9]+"
                     COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod 3 --json -o ${OUT}/apply-json.exr)
 cmfilter_apply_case(NAME info EXIT 0 STDOUT "filtered-image"
                     COMMAND ${CMF} info ${OUT}/apply-partial.exr)
-set_tests_properties(cli.apply.info PROPERTIES DEPENDS cli.apply.warn.partial-overlap)
+# apply-partial.exr comes from warn.partial-overlap: a fixture, so the test
+# runs it first even when only this one is selected.
+set_tests_properties(cli.apply.info PROPERTIES FIXTURES_REQUIRED "cli_dirs;cli_fixtures;apply_inputs;apply_partial")
 
 # The done-when check: reference against oiiotool --colormap + maketx --filter box.
 find_program(MAKETX_CLI maketx)
