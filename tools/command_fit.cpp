@@ -167,18 +167,26 @@ Status run(const FitArgs& args, const CLI::App& app)
 
     // The written file's own relighting error: at the training lights, and
     // at the held-out lights when given.
+    // A .ptm or .rti is read back, so its quantisation is measured; the EXR
+    // holds the fit's floats exactly. Nothing is read back when nothing is
+    // measured.
     std::optional<RelightError> training, held;
-    auto stored = load_fit(written_path);
-    if (!stored) return prefixed("reading back '" + args.output + "': ", stored.error());
+    std::optional<LinearFit> quantised;
+    if (format != FitFileFormat::Exr && (!args.no_error || !args.held_out.empty())) {
+        auto stored = load_fit(written_path);
+        if (!stored) return prefixed("reading back '" + args.output + "': ", stored.error());
+        quantised = std::move(*stored);
+    }
+    const LinearFit& measured = quantised ? *quantised : *fit;
     if (!args.no_error) {
-        auto e = relight_error_from_files(*stored, load, *config, args.threads);
+        auto e = relight_error_from_files(measured, load, *config, args.threads);
         if (!e) return e.error();
         training = *e;
     }
     if (!args.held_out.empty()) {
         StackLoadOptions h = load;
         h.light_file = args.held_out;
-        auto e = relight_error_from_files(*stored, h, *config, args.threads);
+        auto e = relight_error_from_files(measured, h, *config, args.threads);
         if (!e) return e.error();
         held = *e;
     }
@@ -333,19 +341,18 @@ Status run_lafortune(const FitArgs& args, const CLI::App& app, LafortuneVariant 
     const double total_seconds = clock.elapsed_ms() / 1000;
     const auto bytes = std::filesystem::file_size(written_path);
 
-    // The written file's own relighting error, at its fitted view.
-    auto stored = read_lafortune_exr(written_path);
-    if (!stored) return prefixed("reading back '" + args.output + "': ", stored.error());
+    // The relighting error at the fitted view (the EXR holds the fit's
+    // floats exactly, so the fit in memory is the file's).
     std::optional<RelightError> training, held;
     if (!args.no_error) {
-        auto e = lafortune_relight_error(*stored, *stack, *config, args.threads);
+        auto e = lafortune_relight_error(*fit, *stack, *config, args.threads);
         if (!e) return e.error();
         training = *e;
     }
     if (!args.held_out.empty()) {
         StackLoadOptions h = load;
         h.light_file = args.held_out;
-        auto e = stack_fit_error(StackFit{*stored}, h, *config, args.threads);
+        auto e = stack_fit_error(StackFit{*fit}, h, *config, args.threads);
         if (!e) return e.error();
         held = *e;
     }

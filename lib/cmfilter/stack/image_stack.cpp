@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/stack/image_stack.h"
 
+#include "cmfilter/stack/color_channels.h"
 #include "cmfilter/util/parallel_for.h"
 
 #include <algorithm>
@@ -16,26 +17,6 @@ const char* to_string(StackEncoding encoding)
 {
     return encoding == StackEncoding::SceneLinear ? "scene-linear" : "display-encoded";
 }
-
-namespace {
-
-// The colour channels of an image (the first three, or the one grey
-// channel) converted with `convert` (a function on interleaved RGB).
-template <typename Convert>
-Status convert_color_channels(ImageData& img, Convert&& convert)
-{
-    const std::size_t texels = static_cast<std::size_t>(img.width) * img.height;
-    const int colour = img.channels >= 3 ? 3 : 1;
-    std::vector<float> rgb(texels * 3);
-    for (std::size_t t = 0; t < texels; ++t)
-        for (int c = 0; c < 3; ++c) rgb[3 * t + c] = img.pixels[t * img.channels + (colour == 3 ? c : 0)];
-    if (auto st = convert(rgb); !st) return st;
-    for (std::size_t t = 0; t < texels; ++t)
-        for (int c = 0; c < colour; ++c) img.pixels[t * img.channels + c] = rgb[3 * t + c];
-    return ok();
-}
-
-}  // namespace
 
 Expected<StackImage> load_stack_image(const std::string& path, const StackLoadOptions& options,
                                       const ColorConfig& config)
@@ -66,14 +47,16 @@ Expected<StackImage> load_stack_image(const std::string& path, const StackLoadOp
         return out;
     }
     if (auto st = convert_color_channels(
-            img, [&](std::vector<float>& rgb) { return image_rgb_to_scene_linear(rgb, *space, config); });
+            img.pixels, img.channels,
+            [&](std::vector<float>& rgb) { return image_rgb_to_scene_linear(rgb, *space, config); });
         !st)
         return st.error();
     if (options.encoding == StackEncoding::DisplayEncoded) {
         auto srgb = config.resolve("sRGB");
         if (!srgb) return srgb.error();
-        if (auto st = convert_color_channels(
-                img, [&](std::vector<float>& rgb) { return config.from_scene_linear(rgb, *srgb); });
+        if (auto st =
+                convert_color_channels(img.pixels, img.channels,
+                                       [&](std::vector<float>& rgb) { return config.from_scene_linear(rgb, *srgb); });
             !st)
             return st.error();
     }
