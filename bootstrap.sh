@@ -13,7 +13,7 @@ cd "$(dirname "$0")"
 
 packages=(g++ make cmake pkg-config
           libopenimageio-dev openimageio-tools libopencolorio-dev libopenexr-dev libimath-dev
-          libcli11-dev doctest-dev nlohmann-json3-dev libeigen3-dev libceres-dev gnuplot-nox python3
+          libcli11-dev doctest-dev nlohmann-json3-dev libeigen3-dev libceres-dev gnuplot-nox python3 python3-skimage
           clang-format)
 missing=()
 for p in "${packages[@]}"; do

@@ -10,11 +10,14 @@
 #pragma once
 
 #include "cmfilter/color/color_config.h"
+#include "cmfilter/io/rgb_image_file.h"
 #include "cmfilter/math/vec3.h"
+#include "cmfilter/synthesis/sample_analysis.h"
 #include "cmfilter/util/error.h"
 
 #include <CLI/CLI.hpp>
 
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <string>
@@ -57,6 +60,9 @@ Command setup_make_stack(CLI::App& parent);
 Command setup_fit(CLI::App& parent);
 Command setup_relight(CLI::App& parent);
 Command setup_normals(CLI::App& parent);
+Command setup_synth_analyse(CLI::App& parent);
+Command setup_synth(CLI::App& parent);
+Command setup_synth_apply(CLI::App& parent);
 
 // Splits "a:b" into two numbers; names the option and the text on failure.
 Expected<std::pair<double, double>> parse_range(const std::string& option, const std::string& text);
@@ -77,6 +83,35 @@ struct StackSlot {
     std::optional<int> slot;   // the manifest slot read
 };
 Expected<StackSlot> resolve_stack_slot(const std::string& path, const std::optional<int>& slot);
+
+// The options of a sample's analysis (synth-analyse, and synth when it
+// makes the analysis itself): SampleOptions and AnalysisOptions.
+struct SampleAnalysisArgs {
+    int levels = 1;
+    int textons = 0;
+    int candidates = 10;
+    int neighbourhood = 2;
+    int select_images = 0;
+    bool periodic = false;
+    std::uint64_t seed = 1;
+    std::string colorspace;
+};
+// Registers --levels, --textons, --candidates, --neighbourhood, --select,
+// --periodic, --seed and --colorspace; the flags are those fields' names.
+void add_sample_analysis_options(CLI::App& app, SampleAnalysisArgs& args);
+FieldFlags sample_analysis_flags();
+// The flags among add_sample_analysis_options' given on the command line.
+std::vector<std::string> given_sample_analysis_options(const CLI::App& app);
+// The sample at `path` read and analysed with those options.
+Expected<SampleAnalysis> analyse_sample_from_args(const std::string& path, const SampleAnalysisArgs& args,
+                                                  const ColorConfig& config, int threads);
+
+// `values` (width * height * channels, scene-linear in `linear_space`)
+// written with write_rgb_image; PNG/JPEG get grey RGB from one channel and
+// lose a fourth; non-finite values are written as 0.
+Status write_output_image(const std::string& path, int width, int height, int channels, std::vector<float> values,
+                          const std::string& linear_space, const ImageAttributes& attributes,
+                          const ColorConfig& config);
 
 // --probes (render, bench): BadInput unless 1 <= probes <= 64.
 Status check_probes(int probes);

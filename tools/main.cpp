@@ -24,7 +24,8 @@ int main(int argc, char** argv)
         cli::setup_compare(app),       cli::setup_info(app),         cli::setup_noise_image(app),
         cli::setup_bake_noise(app),    cli::setup_render(app),       cli::setup_bench(app),
         cli::setup_make_stack(app),    cli::setup_fit(app),          cli::setup_relight(app),
-        cli::setup_normals(app)};
+        cli::setup_normals(app),
+        cli::setup_synth_analyse(app), cli::setup_synth(app), cli::setup_synth_apply(app)};
 
     auto prefix = [&]() {
         std::string p = "cmfilter";

@@ -10,6 +10,8 @@
 #include "cmfilter/noise/noise_sigma_table_file.h"
 #include "cmfilter/ops/stack_info.h"
 #include "cmfilter/stack/lafortune_file.h"
+#include "cmfilter/synthesis/analysis_file.h"
+#include "cmfilter/synthesis/coordinate_map_file.h"
 
 #include <OpenImageIO/imageio.h>
 
@@ -53,6 +55,15 @@ std::string describe_kind(const std::string& kind, int width, int height)
                "deviation inside a box of width w = base_period 2^LOD / a Gaussian of standard deviation "
                "w/2) and box_ci, gaussian_ci (95% confidence half-widths)";
     if (kind == "linear-fit") return describe_linear_fit(width, height);
+    if (kind == kCoordinateMapKind)
+        return "coordinate map of a synthesised surface (Bosserhoff & Nicoll sec. 4.2): " + std::to_string(width) +
+               " x " + std::to_string(height) +
+               " texels, channels u, v = the centre of the sample texel each copies (normalised; "
+               "cmfilter:sample_width x cmfilter:sample_height), further subimages the hierarchical levels' maps";
+    if (kind == kSynthesisAnalysisKind)
+        return "synthesis analysis of a sample (Bosserhoff & Nicoll sec. 4.1): per pyramid level the texels' "
+               "textons and candidate sets and the textons' dot products; level 0 " +
+               std::to_string(width) + " x " + std::to_string(height);
     return "cmfilter artefact of an unknown kind (made by a newer cmfilter?)";
 }
 
