@@ -22,7 +22,13 @@
 #     the near-diffuse and the shiny one with a PTM and HSH of order 3 (to
 #     cmfilter's EXR and to the .ptm / .rti RTI viewers open), relight each
 #     at a light none of them was made under, and measure the fits against
-#     the exact images there and their normals against the true ones.
+#     the exact images there and their normals against the true ones;
+#  7. synthesise 256 x 256 surfaces from the bundled samples (a photograph of
+#     gravel, the procedural terrain texture and the 7-view BTF;
+#     examples/synth_samples.sh) by hierarchical k-coherence synthesis into
+#     coordinate maps, render them at full size and, through the BTF's PTM,
+#     at LOD 2 by the seam-aware patch lookup and the naive mip of the
+#     coordinates, each against the box-filtered reference.
 #   bash examples/run.sh CMFILTER_BINARY OUTPUT_DIR
 set -euo pipefail
 cmfilter=${1:?usage: run.sh CMFILTER_BINARY OUTPUT_DIR}
@@ -107,6 +113,28 @@ for stack in near-diffuse shiny; do
 done
 
 echo
+echo "synthesis (docs/synthesis.md): 256 x 256 from small samples, quality against naive tiling"
+bash "$root/examples/synth_samples.sh" "$cmfilter" "$out/synthesis" 2>/dev/null >/dev/null
+syn=$out/synthesis
+for sample in gravel.png terrain.png; do
+  name=${sample%.png}
+  "$cmfilter" synth "$syn/$sample" --levels 3 -k 3 --size 256x256 --analysis "$syn/$name-analysis.exr" \
+    -o "$syn/$name-coords.exr" --preview "$syn/$name-256.png" --quality \
+    | awk -v s="$name" '/coherence/ { printf "  %-9s coherence %s (tiling %s), seams %s of pairs\n", s, $2, $4, $11 }'
+done
+"$cmfilter" synth "$out/stacks/multiview/btf.json" --periodic --levels 3 -k 3 --size 256x256 \
+  -o "$syn/multiview-coords.exr" -q
+"$cmfilter" fit "$out/stacks/multiview/view-00/stack.lp" --model ptm-rgb -o "$syn/multiview-view-00.exr" -q
+for method in reference patches naive; do
+  "$cmfilter" synth-apply "$syn/multiview-coords.exr" --source "$syn/multiview-view-00.exr" --light 0.4,0.3,0.87 \
+    --lod 2 --lod-method $method -o "$syn/multiview-lod2-$method.exr" -q
+done
+for method in patches naive; do
+  "$cmfilter" compare "$syn/multiview-lod2-reference.exr" "$syn/multiview-lod2-$method.exr" \
+    | awk -v m="$method" '/CIEDE2000/ { printf "  BTF through its PTM at LOD 2, %-8s dE00 mean %s\n", m, $3 }'
+done
+
+echo
 echo "example outputs in $out:"
 echo "  tables/*.exr      prefiltered colour-map tables (open with oiiotool --info -v or cmfilter info)"
 echo "  tables/*.txt      what cmfilter info says of each"
@@ -119,3 +147,4 @@ echo "  render/sand-snow-*.png  the microsurface scene by naive, gaussian-exact 
 echo "  render/plane-microsurface-grass-rock.png, plane-microsurface-combined.png, plane-snake.png"
 echo "                    colour by slope, combined layers and the snake, by gaussian (docs/microsurface.md)"
 echo "  stacks/           synthetic image stacks (docs/make-stack.md), their fits (.exr, .ptm, .rti) and relit PNGs"
+echo "  synthesis/        samples, analyses, coordinate maps, 256 x 256 previews and LOD 2 renders (docs/synthesis.md)"
