@@ -5,7 +5,11 @@
 // hash (cmfilter:sample_hash), image counts, channels, periodicity and the
 // neighbourhood; per level two subimages: "level-L-texels" (width x height,
 // channels "texton", "c0" .. "c{m-1}" holding texel indices as exact
-// floats) and "level-L-dot" (textons x textons, channel "M").
+// floats) and "level-L-dot" (textons x textons, channel "M"). The file's
+// metadata (also cmfilter:levels and cmfilter:seconds) is on subimage 0;
+// each texels subimage holds cmfilter:textons, cmfilter:candidates and
+// cmfilter:inertia. Every part shares level 0's display window (OpenEXR
+// multi-part files require one).
 #pragma once
 
 #include "cmfilter/synthesis/sample_analysis.h"
@@ -26,7 +30,8 @@ Status write_analysis_exr(const std::string& path, const SampleAnalysis& analysi
 Expected<SampleAnalysis> read_analysis_exr(const std::string& path);
 
 // BadInput naming both files and both hashes when the analysis was made
-// from another sample.
+// from another sample; naming both sizes when it describes another size,
+// count of images used or channels.
 Status check_analysis_matches(const SampleAnalysis& analysis, const std::string& analysis_path,
                               const SynthesisSample& sample);
 

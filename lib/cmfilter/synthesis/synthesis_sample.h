@@ -38,11 +38,11 @@ struct SynthesisSample {
     // SHA-256 (64 hex digits) naming the sample's content: sample_content_hash
     // over its image files in order. Coordinate maps and analyses record it.
     std::string hash;
-    int channels = 0;       // per image
-    int images = 0;         // images in the sample (a BTF: over every view)
-    std::vector<int> used;  // the images the features hold (indices into the sample's images), ascending
-    int dims = 0;           // used.size() * channels
-    bool periodic = false;  // the sample tiles (a synthetic tile): neighbourhoods wrap, else they clamp
+    int channels = 0;                 // per image
+    int images = 0;                   // images in the sample (a BTF: over every view)
+    std::vector<int> used;            // the images the features hold (indices into the sample's images), ascending
+    int dims = 0;                     // used.size() * channels
+    bool periodic = false;            // the sample tiles (a synthetic tile): neighbourhoods wrap, else they clamp
     std::vector<SampleLevel> levels;  // levels[0] full resolution
     int width() const { return levels.empty() ? 0 : levels[0].width; }
     int height() const { return levels.empty() ? 0 : levels[0].height; }
@@ -78,7 +78,8 @@ Expected<SynthesisSample> sample_from_features(int width, int height, int dims, 
 Expected<std::vector<std::string>> sample_image_files(const std::string& path);
 
 // SHA-256 over the SHA-256 digests of `files`' bytes, in order (each read
-// in chunks). What SynthesisSample::hash holds for a sample read from files.
+// in chunks): of the digests' 64-hex-digit texts, concatenated. What
+// SynthesisSample::hash holds for a sample read from files.
 Expected<std::string> sample_content_hash(const std::vector<std::string>& files);
 
 }  // namespace cmfilter
