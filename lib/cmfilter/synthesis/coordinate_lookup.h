@@ -22,6 +22,7 @@
 #pragma once
 
 #include "cmfilter/synthesis/coordinate_map.h"
+#include "cmfilter/synthesis/sample_image.h"
 #include "cmfilter/util/error.h"
 
 #include <cstddef>
@@ -29,13 +30,6 @@
 #include <vector>
 
 namespace cmfilter {
-
-// One image of the sample (or a fit relit at one light), level 0.
-struct SampleImage {
-    int width = 0, height = 0, channels = 0;
-    std::vector<float> pixels;  // width * height * channels, row-major, top row first
-    bool periodic = false;      // reads beyond the edge wrap (else clamp)
-};
 
 struct OutputImage {
     int width = 0, height = 0, channels = 0;
@@ -47,7 +41,7 @@ const char* to_string(LodMethod method);  // "reference", "naive", "point", "lev
 Expected<LodMethod> parse_lod_method(const std::string& name);
 
 struct LodOptions {
-    int lod = 0;                           // L >= 0: footprints of 2^L x 2^L full-size texels
+    int lod = 0;  // L >= 0: footprints of 2^L x 2^L full-size texels
     LodMethod method = LodMethod::Patches;
     int patches = 4;  // Patches: offsets kept per footprint, >= 1
     int threads = 0;
@@ -67,11 +61,17 @@ Expected<OutputImage> render_at_lod(const CoordinateMap& map, const SampleImage&
 // A patch level: per footprint of level L, `patches` entries of (dx, dy,
 // share): the offset (sample texel - output texel, full-size texels) of a
 // piece and the share of the footprint it covers, most common first; unused
-// entries have share 0. Shares sum to 1.
+// entries have share 0. Shares sum to 1. Offsets into a periodic sample
+// (reads wrap) are wrapped into [0, W) x [0, H) of the map's level-0 sample,
+// so that a piece copied across the sample's edge keeps one offset. Ties
+// between offsets as common are kept by lower (dy, dx). BadInput naming
+// LodOptions::lod (< 0) or LodOptions::patches (< 1), or a map without a
+// level 0.
 struct PatchLevel {
     int lod = 0, width = 0, height = 0, patches = 0;
     std::vector<float> entries;  // width * height * patches * 3
+    const float* entry(std::size_t texel, int k) const { return entries.data() + (texel * patches + k) * 3; }
 };
-Expected<PatchLevel> build_patch_level(const CoordinateMap& map, int lod, int patches, int threads = 0);
+Expected<PatchLevel> build_patch_level(const CoordinateMap& map, int lod, int patches, bool periodic, int threads = 0);
 
 }  // namespace cmfilter
