@@ -20,9 +20,9 @@ namespace cmfilter {
 struct LevelAnalysis {
     int width = 0, height = 0;
     int textons = 0;
-    std::vector<std::int32_t> texton;  // width * height texton indices
-    std::vector<float> dot;            // textons * textons, M[i * textons + j] = v_i . v_j
-    int candidates = 0;                // m
+    std::vector<std::int32_t> texton;   // width * height texton indices
+    std::vector<float> dot;             // textons * textons, M[i * textons + j] = v_i . v_j
+    int candidates = 0;                 // m
     std::vector<std::int32_t> similar;  // width * height * m texel indices (y * width + x), nearest first
     double inertia = 0;                 // the k-means inertia (squared feature distance, summed)
     std::size_t texels() const { return static_cast<std::size_t>(width) * height; }
@@ -40,7 +40,7 @@ struct SampleAnalysis {
     SampleKind sample_kind = SampleKind::Image;
     int sample_images = 0, images_used = 0, channels = 0;
     bool periodic = false;
-    int neighbourhood = 2;  // n of the candidate sets' (2n + 1)^2 neighbourhoods
+    int neighbourhood = 2;              // n of the candidate sets' (2n + 1)^2 neighbourhoods
     std::vector<LevelAnalysis> levels;  // levels[0] full resolution
     double seconds = 0;                 // time the analysis took
     int width() const { return levels.empty() ? 0 : levels[0].width; }

@@ -4,6 +4,8 @@
 // of an image, a stack or a BTF, or a fit relit at a light.
 #include "cmfilter/synthesis/synthesis_source.h"
 
+#include "cmfilter/stack/stack_encoding.h"
+
 #include "cmfilter/io/image_reading.h"
 #include "cmfilter/stack/btf_manifest.h"
 #include "cmfilter/stack/fit_file.h"
@@ -100,7 +102,7 @@ SampleImage to_sample_image(ImageData&& data, bool periodic)
     return image;
 }
 
-Expected<SourceImage> load_fit_source(const SourceOptions& options)
+Expected<SourceImage> load_fit_source(const SourceOptions& options, const ColorConfig& config)
 {
     if (options.image >= 0)
         return bad_input("SourceOptions::image " + std::to_string(options.image) + " cannot be read from the fit '" +
@@ -132,10 +134,18 @@ Expected<SourceImage> load_fit_source(const SourceOptions& options)
     source.image.width = stack_fit_width(*fit);
     source.image.height = stack_fit_height(*fit);
     source.image.channels = stack_fit_channels(*fit);
+    // Display-encoded fits (.ptm, .rti) are decoded: a source is always
+    // scene-linear, so that filtering through the map averages light.
+    if (auto st = convert_stack_encoding(*pixels, stack_fit_channels(*fit), stack_fit_encoding(*fit),
+                                         StackEncoding::SceneLinear, config);
+        !st)
+        return prefixed("'" + options.path + "': ", st.error());
     source.image.pixels = std::move(*pixels);
     source.image.periodic = options.periodic;
     source.is_fit = true;
-    source.colorspace = std::visit([](const auto& f) { return f.colorspace; }, *fit);
+    source.colorspace = stack_fit_encoding(*fit) == StackEncoding::SceneLinear
+                            ? std::visit([](const auto& f) { return f.colorspace; }, *fit)
+                            : config.scene_linear_name();
     source.description = stack_fit_model_name(*fit) + " " + options.path + " relit at " + direction_text(light);
     if (view) source.description += " seen from " + direction_text(*view);
     return source;
@@ -256,7 +266,7 @@ Expected<SourceImage> load_source_image(const SourceOptions& options, const Colo
     auto kind = source_kind(options.path);
     if (!kind) return kind.error();
     switch (*kind) {
-    case SourceKind::Fit: return load_fit_source(options);
+    case SourceKind::Fit: return load_fit_source(options, config);
     case SourceKind::Image: return load_plain_image(options, config);
     case SourceKind::Stack:
     case SourceKind::Btf: return load_slot_image(options, config);

@@ -31,7 +31,7 @@ struct SourceImage {
     SampleImage image;
     std::string description;  // "image 3 of stack.lp (light 0.5, 0, 0.87)", "ptm-rgb fit.ptm relit at .."
     bool is_fit = false;
-    std::string colorspace;  // the values' space (linear, or display-encoded for .ptm/.rti)
+    std::string colorspace;  // the values' space: scene-linear (a .ptm/.rti decoded), or a data space
 };
 
 // Io / BadInput as the readers; BadInput naming the field and value:
