@@ -63,6 +63,15 @@ bool read_seed(const OIIO::ImageSpec& spec, std::uint64_t* seed)
     return true;
 }
 
+// A text attribute; one another tool wrote as a number (oiiotool's
+// `--attrib name 0`) as its text.
+std::string text_attribute(const OIIO::ImageSpec& spec, const char* name)
+{
+    const OIIO::ParamValue* p = spec.find_attribute(name);
+    if (!p) return {};
+    return p->type() == OIIO::TypeDesc::STRING ? std::string(p->get_ustring().string()) : std::string(p->get_string());
+}
+
 }  // namespace
 
 Status write_coordinate_map_exr(const std::string& path, const CoordinateMap& map)
@@ -145,9 +154,9 @@ Expected<CoordinateMap> read_coordinate_map_exr(const std::string& path)
 
     CoordinateMap map;
     CoordinateMapInfo& info = map.info;
-    info.sample_path = spec0.get_string_attribute("cmfilter:sample");
-    info.sample_hash = spec0.get_string_attribute("cmfilter:sample_hash");
-    info.sample_kind = spec0.get_string_attribute("cmfilter:sample_kind");
+    info.sample_path = text_attribute(spec0, "cmfilter:sample");
+    info.sample_hash = text_attribute(spec0, "cmfilter:sample_hash");
+    info.sample_kind = text_attribute(spec0, "cmfilter:sample_kind");
     if (info.sample_kind != "image" && info.sample_kind != "stack" && info.sample_kind != "btf")
         return bad("has an unknown cmfilter:sample_kind '" + info.sample_kind + "' (expected image, stack or btf)");
     auto flag = [&](const char* name, bool* value) -> Status {
@@ -166,9 +175,12 @@ Expected<CoordinateMap> read_coordinate_map_exr(const std::string& path)
                    std::to_string(info.neighbourhood) + " and cmfilter:levels " + std::to_string(info.levels) +
                    "; expected each >= 1");
     if (!read_seed(spec0, &info.seed)) return bad("has no valid cmfilter:seed; expected a non-negative integer");
-    info.seconds = double_attribute(spec0, "cmfilter:seconds");
-    if (!std::isfinite(info.seconds) || info.seconds < 0)
-        return bad("has no valid cmfilter:seconds; expected a time >= 0");
+    // The synthesis time is optional (0 when another tool wrote the map).
+    if (spec0.find_attribute("cmfilter:seconds")) {
+        info.seconds = double_attribute(spec0, "cmfilter:seconds");
+        if (!std::isfinite(info.seconds) || info.seconds < 0)
+            return bad("has cmfilter:seconds " + std::to_string(info.seconds) + "; expected a time >= 0");
+    }
 
     for (int s = 0; in->seek_subimage(s, 0); ++s) {
         const std::size_t l = static_cast<std::size_t>(s);

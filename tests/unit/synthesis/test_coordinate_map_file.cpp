@@ -41,12 +41,13 @@ CoordinateLevel random_level(std::mt19937_64& rng, int w, int h, int sw, int sh)
 }
 
 // A one-level file as oiiotool writes one: every number an int attribute
-// (seconds a float), u, v the texel centres (x + 0.5) / W, (y + 0.5) / H.
+// (seconds a float or absent), u, v the texel centres (x + 0.5) / W, (y + 0.5) / H.
 struct HandFile {
     std::string kind = "coordinate-map";
     int version = 1;
     int sample_width = 5, sample_height = 3;
     bool with_v = true;
+    float seconds = 1.5f;  // NaN: no cmfilter:seconds attribute
     float u[4] = {0.1f, 0.3f, 0.5f, 0.9f};
     float v[4] = {0.5f, 0.1f, 0.9f, 0.5f};
 };
@@ -59,7 +60,7 @@ std::string write_by_hand(const std::string& name, const HandFile& h)
     spec.attribute("cmfilter:kind", h.kind);
     spec.attribute("cmfilter:format_version", h.version);
     spec.attribute("cmfilter:sample", "grass.png");
-    spec.attribute("cmfilter:sample_hash", std::string(64, 'b'));
+    spec.attribute("cmfilter:sample_hash", 0);  // oiiotool's `--attrib cmfilter:sample_hash 0` is an int
     spec.attribute("cmfilter:sample_kind", "image");
     if (h.sample_width != 0) spec.attribute("cmfilter:sample_width", h.sample_width);
     spec.attribute("cmfilter:sample_height", h.sample_height);
@@ -69,7 +70,7 @@ std::string write_by_hand(const std::string& name, const HandFile& h)
     spec.attribute("cmfilter:levels", 1);
     spec.attribute("cmfilter:toroidal", 0);
     spec.attribute("cmfilter:seed", 42);
-    spec.attribute("cmfilter:seconds", 1.5f);
+    if (!std::isnan(h.seconds)) spec.attribute("cmfilter:seconds", h.seconds);
     std::vector<float> px;
     for (int t = 0; t < 4; ++t) {
         px.push_back(h.u[t]);
@@ -154,6 +155,7 @@ TEST_CASE("coordinate map file: a file with int attributes, as oiiotool writes, 
     auto r = read_coordinate_map_exr(write_by_hand("oiiotool.exr", HandFile{}));
     REQUIRE_MESSAGE(r, (r ? std::string() : r.error().message));
     CHECK(r->info.sample_path == "grass.png");
+    CHECK(r->info.sample_hash == "0");
     CHECK(r->info.sample_periodic);
     CHECK_FALSE(r->info.toroidal);
     CHECK(r->info.k == 3);
@@ -165,6 +167,16 @@ TEST_CASE("coordinate map file: a file with int attributes, as oiiotool writes, 
     CHECK(level.sample_height == 3);
     // floor(u * 5), floor(v * 3) by hand: u 0.1 0.3 0.5 0.9 -> 0 1 2 4; v 0.5 0.1 0.9 0.5 -> 1 0 2 1.
     CHECK(level.coords == std::vector<std::int32_t>{0, 1, 1, 0, 2, 2, 4, 1});
+
+    // Without a synthesis time (oiiotool writes none): 0.
+    HandFile untimed;
+    untimed.seconds = std::numeric_limits<float>::quiet_NaN();
+    auto u = read_coordinate_map_exr(write_by_hand("untimed.exr", untimed));
+    REQUIRE_MESSAGE(u, (u ? std::string() : u.error().message));
+    CHECK(u->info.seconds == 0.0);
+    HandFile negative;
+    negative.seconds = -2.0f;
+    check_refused(write_by_hand("negative-time.exr", negative), {"cmfilter:seconds -2"});
 }
 
 TEST_CASE("coordinate map file: u = 1 is refused naming the file, the texel and the value")
