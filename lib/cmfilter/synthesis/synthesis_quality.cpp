@@ -16,6 +16,7 @@ namespace {
 // deterministic set.
 constexpr int kRandomPairs = 4096;
 constexpr std::uint64_t kPairSeed = 0x636d66696c746572ull;
+constexpr std::uint64_t kGridSeed = 0x677269642d736565ull;
 
 std::uint64_t splitmix64(std::uint64_t& state)
 {
@@ -35,7 +36,10 @@ double texton_distance(const LevelAnalysis& level, std::int32_t a, std::int32_t 
 }
 
 // The output texels the coherence measures: an even grid of about `wanted`
-// texels, every texel when `wanted` is 0 or at least the output.
+// cells, one texel at a fixed pseudo-random place in each (a grid of cell
+// centres would alias with a tiling whose period divides the cell size and
+// miss every tile border), every texel when `wanted` is 0 or at least the
+// output.
 std::vector<std::size_t> coherence_grid(int width, int height, int wanted)
 {
     const std::size_t texels = static_cast<std::size_t>(width) * height;
@@ -47,10 +51,18 @@ std::vector<std::size_t> coherence_grid(int width, int height, int wanted)
     }
     const int gx = std::clamp(static_cast<int>(std::lround(std::sqrt(double(wanted) * width / height))), 1, width);
     const int gy = std::clamp(static_cast<int>(std::lround(double(wanted) / gx)), 1, height);
+    std::uint64_t state = kGridSeed;
     for (int j = 0; j < gy; ++j)
         for (int i = 0; i < gx; ++i) {
-            const int x = static_cast<int>((i + 0.5) * width / gx);
-            const int y = static_cast<int>((j + 0.5) * height / gy);
+            // Cell [x0, x1) x [y0, y1); 53 random bits place the texel in it.
+            const int x0 = static_cast<int>(static_cast<long long>(i) * width / gx);
+            const int x1 = static_cast<int>(static_cast<long long>(i + 1) * width / gx);
+            const int y0 = static_cast<int>(static_cast<long long>(j) * height / gy);
+            const int y1 = static_cast<int>(static_cast<long long>(j + 1) * height / gy);
+            const double rx = static_cast<double>(splitmix64(state) >> 11) / 9007199254740992.0;
+            const double ry = static_cast<double>(splitmix64(state) >> 11) / 9007199254740992.0;
+            const int x = std::min(x1 - 1, x0 + static_cast<int>(rx * (x1 - x0)));
+            const int y = std::min(y1 - 1, y0 + static_cast<int>(ry * (y1 - y0)));
             grid.push_back(static_cast<std::size_t>(y) * width + x);
         }
     return grid;

@@ -39,7 +39,9 @@ struct SynthesisQuality {
 
 struct QualityOptions {
     int neighbourhood = 2;  // n of the coherence windows
-    // Output texels the coherence measures (an even grid; 0: all).
+    // Output texels the coherence measures (0 or more than the output: all):
+    // one at a fixed pseudo-random place in each cell of an even grid of
+    // about this many cells, so that no tiling period aliases with it.
     int coherence_texels = 4096;
     int threads = 0;
 };
