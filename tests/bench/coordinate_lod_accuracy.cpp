@@ -19,9 +19,7 @@
 #include "cmfilter/color/color_config.h"
 #include "cmfilter/synthesis/coordinate_lookup.h"
 #include "cmfilter/synthesis/synthesis_source.h"
-#if CMFILTER_BENCH_READS_COORDINATE_MAPS
 #include "cmfilter/synthesis/coordinate_map_file.h"
-#endif
 
 #include "bench_timing.h"
 #include "patch_map_support.h"
@@ -98,7 +96,6 @@ int main(int argc, char** argv)
         sample = cmfilter_test::procedural_sample(sample_size, sample_size, 3, periodic, seed + 1);
         map = cmfilter_test::random_patch_map(size, size, sample_size, sample_size, min_side, max_side, periodic, seed);
     } else {
-#if CMFILTER_BENCH_READS_COORDINATE_MAPS
         if (map_path.empty() || source.path.empty())
             return fail("expected MAP.exr --source SAMPLE, or --synthetic-seams");
         auto read = read_coordinate_map_exr(map_path);
@@ -112,9 +109,6 @@ int main(int argc, char** argv)
         if (!loaded) return fail(loaded.error().message);
         sample = std::move(loaded->image);
         std::cerr << "source: " << loaded->description << "\n";
-#else
-        return fail("this build reads no coordinate map files; use --synthetic-seams");
-#endif
     }
 
     std::printf("lod,method,rmse,mean_abs,ms\n");

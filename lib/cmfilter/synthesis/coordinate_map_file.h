@@ -8,9 +8,14 @@
 // cmfilter:format_version 1, cmfilter:sample (path), cmfilter:sample_hash,
 // cmfilter:sample_kind, cmfilter:sample_width/_height,
 // cmfilter:sample_periodic, cmfilter:k, cmfilter:neighbourhood,
-// cmfilter:levels, cmfilter:toroidal, cmfilter:seed. Subimages "level-1" ..
-// hold the hierarchical levels' maps into the sample's pyramid levels
-// (their cmfilter:sample_width/_height that level's size).
+// cmfilter:levels, cmfilter:toroidal, cmfilter:seed (decimal text, exact
+// for any 64-bit seed; an int attribute reads too), cmfilter:seconds (the
+// synthesis time, a double; 0 when absent). Subimage 0 is named "level-0";
+// subimages "level-1" .. hold the hierarchical levels' maps into the
+// sample's pyramid levels (their cmfilter:sample_width/_height that level's
+// size). Numbers written by other tools as int attributes (oiiotool's
+// --attrib:type=int) read; a coordinate u reads as sample texel
+// floor(u * width), so any u in [0, 1) names a texel.
 #pragma once
 
 #include "cmfilter/synthesis/coordinate_map.h"

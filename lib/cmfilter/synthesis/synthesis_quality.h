@@ -14,7 +14,13 @@
 //   sample (c(p + e) != c(p) + e), and their contrast: the mean squared
 //   distance across those pairs over the mean across adjacent sample pairs
 //   (1: a seam looks like the sample's own edges).
-// Each also for naive tiling of the sample at the same size, the baseline.
+// Output neighbourhoods and adjacent pairs wrap when the map is toroidal
+// (CoordinateMapInfo::toroidal), else offsets outside the output are
+// skipped; sample neighbourhoods and adjacency wrap when the analysis is
+// periodic, else they clamp. The random sample pairs are a fixed set (4096,
+// from a fixed splitmix64 seed), so every measure is deterministic for any
+// thread count. Each also for naive tiling of the sample at the same size,
+// the baseline.
 #pragma once
 
 #include "cmfilter/synthesis/coordinate_map.h"
@@ -33,13 +39,17 @@ struct SynthesisQuality {
 
 struct QualityOptions {
     int neighbourhood = 2;  // n of the coherence windows
-    // Output texels the coherence measures (an even grid; 0: all).
+    // Output texels the coherence measures (0 or more than the output: all):
+    // one at a fixed pseudo-random place in each cell of an even grid of
+    // about this many cells, so that no tiling period aliases with it.
     int coherence_texels = 4096;
     int threads = 0;
 };
 
 // BadInput when the map's level 0 is not into the analysis's level 0 (its
-// sample size) or a coordinate lies outside it.
+// sample size) or a coordinate lies outside it (naming the texel), or naming
+// the field: QualityOptions::neighbourhood < 1 or (2n + 1) above the
+// sample's width or height, QualityOptions::coherence_texels < 0.
 Expected<SynthesisQuality> measure_synthesis(const CoordinateMap& map, const SampleAnalysis& analysis,
                                              const QualityOptions& options);
 
