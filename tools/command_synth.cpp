@@ -46,8 +46,10 @@ struct SynthArgs {
 
 nlohmann::json quality_json(const SynthesisQuality& q)
 {
-    return {{"coherence", q.coherence},   {"coverage", q.coverage},
-            {"uniform_coverage", q.uniform_coverage}, {"seam_share", q.seam_share},
+    return {{"coherence", q.coherence},
+            {"coverage", q.coverage},
+            {"uniform_coverage", q.uniform_coverage},
+            {"seam_share", q.seam_share},
             {"seam_contrast", q.seam_contrast}};
 }
 
@@ -60,7 +62,7 @@ Expected<SampleAnalysis> obtain_analysis(const SynthArgs& args, const CLI::App& 
     if (!args.analysis_path.empty() && std::filesystem::exists(args.analysis_path)) {
         const auto given = given_sample_analysis_options(app);
         for (const std::string& flag : given)
-            if (flag != "--seed" && flag != "--colorspace")
+            if (flag != "--seed" && flag != "--colorspace" && flag != "--levels")
                 return bad_input(flag + " sets how an analysis is made, but the analysis '" + args.analysis_path +
                                  "' exists and is reused as it was made (remove the file to analyse again)");
         auto analysis = read_analysis_exr(args.analysis_path);
@@ -71,8 +73,8 @@ Expected<SampleAnalysis> obtain_analysis(const SynthArgs& args, const CLI::App& 
         if (!hash) return hash.error();
         if (*hash != analysis->sample_hash)
             return bad_input("the analysis '" + args.analysis_path + "' was made from another sample ('" +
-                             analysis->sample_path + "', hash " + analysis->sample_hash.substr(0, 16) +
-                             "...), not '" + args.sample + "' (hash " + hash->substr(0, 16) + "...)");
+                             analysis->sample_path + "', hash " + analysis->sample_hash.substr(0, 16) + "...), not '" +
+                             args.sample + "' (hash " + hash->substr(0, 16) + "...)");
         reused = true;
         return analysis;
     }
@@ -110,7 +112,9 @@ Status run(const SynthArgs& args, const CLI::App& app)
     options.height = size->second;
     options.k = args.k;
     options.neighbourhood = args.synthesis_neighbourhood > 0 ? args.synthesis_neighbourhood : analysis->neighbourhood;
-    options.levels = args.analysis.levels;
+    // The levels synthesised: --levels, else every level of a reused analysis.
+    options.levels = reused && !app.count("--levels") ? static_cast<int>(analysis->levels.size())
+                                                      : args.analysis.levels;
     options.toroidal = args.toroidal;
     options.seed = args.analysis.seed;
     options.threads = args.threads;
@@ -124,9 +128,8 @@ Status run(const SynthArgs& args, const CLI::App& app)
         q.threads = args.threads;
         auto measured = measure_synthesis(*map, *analysis, q);
         if (!measured) return measured.error();
-        auto baseline = measure_synthesis(tiled_coordinate_map(options.width, options.height, analysis->width(),
-                                                               analysis->height()),
-                                          *analysis, q);
+        auto baseline = measure_synthesis(
+            tiled_coordinate_map(options.width, options.height, analysis->width(), analysis->height()), *analysis, q);
         if (!baseline) return baseline.error();
         quality = *measured;
         tiled = *baseline;
@@ -145,7 +148,9 @@ Status run(const SynthArgs& args, const CLI::App& app)
         ImageAttributes attributes;
         attributes.text = {{"cmfilter:kind", "synthesised-image"}, {"cmfilter:coordinate_map", args.output}};
         if (auto st = write_output_image(args.preview, out->width, out->height, out->channels, std::move(out->pixels),
-                                             image->colorspace, attributes, *config); !st) return st;
+                                         image->colorspace, attributes, *config);
+            !st)
+            return st;
     }
     if (auto st = write_coordinate_map_exr(args.output, *map); !st) return st;
 
@@ -176,8 +181,7 @@ Status run(const SynthArgs& args, const CLI::App& app)
                   << args.sample << " (" << analysis->width() << " x " << analysis->height() << "), k " << options.k
                   << ", neighbourhood " << options.neighbourhood << ", " << options.levels << " level(s)"
                   << (options.toroidal ? ", toroidal" : "") << "; synthesis " << map->info.seconds << " s, analysis "
-                  << (reused ? "reused from " + args.analysis_path : std::to_string(analysis->seconds) + " s")
-                  << "\n";
+                  << (reused ? "reused from " + args.analysis_path : std::to_string(analysis->seconds) + " s") << "\n";
         if (quality)
             std::cout << "  coherence " << quality->coherence << " (tiling " << tiled->coherence << "), coverage "
                       << quality->coverage << " (tiling " << tiled->coverage << "), seams " << quality->seam_share

@@ -126,9 +126,8 @@ Status run(const SynthApplyArgs& args, const CLI::App& app)
                        {"cmfilter:description", image->description}};
     attributes.numbers = {{"cmfilter:lod", static_cast<double>(args.lod)}};
     const int width = out->width, height = out->height, channels = out->channels;
-    if (auto st =
-            write_output_image(args.output, width, height, channels, std::move(out->pixels), image->colorspace,
-                               attributes, *config);
+    if (auto st = write_output_image(args.output, width, height, channels, std::move(out->pixels), image->colorspace,
+                                     attributes, *config);
         !st)
         return st;
 
@@ -152,9 +151,9 @@ Status run(const SynthApplyArgs& args, const CLI::App& app)
         j["bytes"] = {{"sample", sample_bytes}, {"map", map_bytes}, {"full_size_image", full_bytes}};
         std::cout << j.dump(2) << "\n";
     } else if (!args.quiet) {
-        std::cout << "wrote " << args.output << ": " << image->description << " through " << args.map << ", "
-                  << width << " x " << height << " (LOD " << args.lod << ", " << to_string(*method) << "), "
-                  << seconds << " s\n";
+        std::cout << "wrote " << args.output << ": " << image->description << " through " << args.map << ", " << width
+                  << " x " << height << " (LOD " << args.lod << ", " << to_string(*method) << "), " << seconds
+                  << " s\n";
     }
     return ok();
 }

@@ -20,12 +20,12 @@ int main(int argc, char** argv)
                "Run 'cmfilter <command> --help' for a command's options.");
 
     std::vector<cli::Command> commands = {
-        cli::setup_bake_colormap(app), cli::setup_bake_moments(app), cli::setup_apply(app),
-        cli::setup_compare(app),       cli::setup_info(app),         cli::setup_noise_image(app),
-        cli::setup_bake_noise(app),    cli::setup_render(app),       cli::setup_bench(app),
-        cli::setup_make_stack(app),    cli::setup_fit(app),          cli::setup_relight(app),
-        cli::setup_normals(app),
-        cli::setup_synth_analyse(app), cli::setup_synth(app), cli::setup_synth_apply(app)};
+        cli::setup_bake_colormap(app), cli::setup_bake_moments(app),  cli::setup_apply(app),
+        cli::setup_compare(app),       cli::setup_info(app),          cli::setup_noise_image(app),
+        cli::setup_bake_noise(app),    cli::setup_render(app),        cli::setup_bench(app),
+        cli::setup_make_stack(app),    cli::setup_fit(app),           cli::setup_relight(app),
+        cli::setup_normals(app),       cli::setup_synth_analyse(app), cli::setup_synth(app),
+        cli::setup_synth_apply(app)};
 
     auto prefix = [&]() {
         std::string p = "cmfilter";

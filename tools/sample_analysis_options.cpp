@@ -7,8 +7,8 @@
 namespace cmfilter::cli {
 
 namespace {
-const char* const kAnalysisFlags[] = {"--levels", "--textons", "--candidates", "--neighbourhood",
-                                      "--select", "--periodic", "--seed",      "--colorspace"};
+const char* const kAnalysisFlags[] = {"--levels", "--textons",  "--candidates", "--neighbourhood",
+                                      "--select", "--periodic", "--seed",       "--colorspace"};
 }
 
 void add_sample_analysis_options(CLI::App& app, SampleAnalysisArgs& args)

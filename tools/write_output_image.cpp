@@ -11,8 +11,7 @@
 namespace cmfilter::cli {
 
 Status write_output_image(const std::string& path, int width, int height, int channels, std::vector<float> values,
-                          const std::string& linear_space, const ImageAttributes& attributes,
-                          const ColorConfig& config)
+                          const std::string& linear_space, const ImageAttributes& attributes, const ColorConfig& config)
 {
     for (float& v : values)
         if (!std::isfinite(v)) v = 0;

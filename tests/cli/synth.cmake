@@ -37,7 +37,7 @@ synth_case(synth.reuse 0 STDOUT "analysis reused from .*synth-sample-analysis\\.
            --preview ${OUT}/synth-preview.png)
 set_tests_properties(cli.synth.reuse PROPERTIES FIXTURES_REQUIRED "cli_dirs;synth_fixtures;synth_analysis"
                      FIXTURES_SETUP synth_map)
-synth_case(synth.info-map 0 STDOUT "coordinate-map.*40 x 30" "" ${CMF} info ${SYM})
+synth_case(synth.info-map 0 STDOUT "coordinate map of a synthesised surface.*40 x 30 texels" "" ${CMF} info ${SYM})
 set_tests_properties(cli.synth.info-map PROPERTIES FIXTURES_REQUIRED "cli_dirs;synth_map")
 
 # The same map for any thread count, and the preview equal to synth-apply's
@@ -81,7 +81,7 @@ set_tests_properties(cli.synth.apply-stack-light PROPERTIES FIXTURES_REQUIRED "c
 # Bad input.
 set(SYB ${OUT}/synth-bad.exr)
 synth_case(bad.synth-missing 2 STDERR "no-such\\.png" ${SYB} ${CMF} synth ${SYF}/no-such.png -o ${SYB})
-synth_case(bad.synth-empty 2 STDERR "empty\\.png" ${SYB} ${CMF} synth ${SYF}/empty.png -o ${SYB})
+synth_case(bad.synth-empty 3 STDERR "empty\\.png' is empty" ${SYB} ${CMF} synth ${SYF}/empty.png -o ${SYB})
 synth_case(bad.synth-stack-sizes 3 STDERR "wide\\.png' is 9x8 but .*img-0\\.png' is 8x8" ${SYB}
            ${CMF} synth ${STF}/size.lp -o ${SYB})
 synth_case(bad.synth-k 3 STDERR "-k 0" ${SYB} ${CMF} synth ${SYF}/sample.png -o ${SYB} -k 0 --textons 16)

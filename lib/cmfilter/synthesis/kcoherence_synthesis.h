@@ -28,9 +28,9 @@ constexpr int kMaxSynthesisSize = 16384;
 
 struct SynthesisOptions {
     int width = 256, height = 256;  // 1 .. kMaxSynthesisSize
-    int k = 3;                      // 1 .. m + 1: the texel itself and its k - 1 most similar (m: the analysis.s candidates)
-    int neighbourhood = 2;          // n: (2n + 1)^2 window, 1 .. what the coarsest level used allows
-    int levels = 1;                 // 1 .. the analysis's levels; the finest `levels` are used
+    int k = 3;              // 1 .. m + 1: the texel itself and its k - 1 most similar (m: the analysis.s candidates)
+    int neighbourhood = 2;  // n: (2n + 1)^2 window, 1 .. what the coarsest level used allows
+    int levels = 1;         // 1 .. the analysis's levels; the finest `levels` are used
     bool toroidal = false;
     std::uint64_t seed = 1;
     int threads = 0;  // used for whole-level passes that do not depend on order
