@@ -121,10 +121,13 @@ def mosaics(samples, out, docs):
         sample_png = os.path.join(out, f"{name}-sample.png")
         tiled_png = os.path.join(out, f"{name}-tiled.png")
         src = path if path.endswith(".png") else first_image(path)
-        grey = int(run("oiiotool", "--echo", "{TOP.nchannels}", src).split()[0]) == 1
+        grey = int(run("oiiotool", src, "--echo", "{TOP.nchannels}").split()[0]) == 1
         run("oiiotool", src, "--ch", "0,0,0" if grey else "R,G,B", "-d", "uint8", "-o", sample_png)
-        run("oiiotool", sample_png, "--dup", "--dup", "--dup", "--mosaic", "4x1", "--dup",
-            "--dup", "--dup", "--mosaic", "1x4", "-o", tiled_png)
+        width = int(run("oiiotool", sample_png, "--echo", "{TOP.width}").split()[0])
+        tiles = -(-256 // width)
+        dup = ["--dup"] * (tiles - 1)
+        run("oiiotool", sample_png, *dup, "--mosaic", f"{tiles}x1", *dup, "--mosaic", f"1x{tiles}", "--cut",
+            "256x256+0+0", "-o", tiled_png)
         args = [tiled_png] + sum([[i, "--ch", "R,G,B"] for i in images], [])
         run("oiiotool", *args, "--mosaic:pad=4", f"{len(images) + 1}x1", "-o",
             os.path.join(docs, "images", f"synthesis-{name}.png"))

@@ -181,15 +181,32 @@ private:
             known_dy_.push_back(o.dy);
             known_texton_.push_back(a_.texton[s]);
             // Its sample texel shifted back by the offset (Ashikhmin's
-            // coherence, k = 1), and that texel's k - 1 most similar.
-            const int cx = sample_x(s % a_.width - o.dx), cy = sample_y(s / a_.width - o.dy);
+            // coherence, k = 1), and that texel's k - 1 most similar. Off a
+            // sample that does not tile there is no such texel: clamping it
+            // would repeat the edge texel into streaks.
+            int cx = s % a_.width - o.dx, cy = s / a_.width - o.dy;
+            if (periodic_) {
+                cx = sample_x(cx);
+                cy = sample_y(cy);
+            } else if (cx < 0 || cy < 0 || cx >= a_.width || cy >= a_.height) {
+                continue;
+            }
             const std::int32_t c = cy * a_.width + cx;
             add_candidate(c);
             const int extra = std::min(k_ - 1, a_.candidates);
             const std::int32_t* similar = a_.similar.data() + static_cast<std::size_t>(c) * a_.candidates;
             for (int j = 0; j < extra; ++j) add_candidate(similar[j]);
         }
-        if (known_texton_.empty()) return random_texel(centre, whole_window ? 2 : 1);
+        // No neighbour yet, or none whose copy continues inside the sample:
+        // a fresh copy starts at a random texel, or the best of it and its
+        // k - 1 most similar when there are neighbours to match.
+        if (candidates_.empty()) {
+            const std::int32_t start = random_texel(centre, whole_window ? 2 : 1);
+            if (known_texton_.empty()) return start;
+            add_candidate(start);
+            const std::int32_t* similar = a_.similar.data() + static_cast<std::size_t>(start) * a_.candidates;
+            for (int j = 0; j < std::min(k_ - 1, a_.candidates); ++j) add_candidate(similar[j]);
+        }
 
         std::int32_t best = candidates_.front();
         float best_cost = std::numeric_limits<float>::infinity();

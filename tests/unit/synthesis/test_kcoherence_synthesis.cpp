@@ -102,7 +102,10 @@ TEST_CASE("k-coherence synthesis: each texel is the best of its k-coherence cand
                     std::set<int> candidates;
                     for (auto [dx, dy] : offsets) {
                         const int s = coord(x + dx, y + dy);
-                        const int c = wrap(s / w - dy, h) * w + wrap(s % w - dx, w);
+                        // A copy that would leave a sample that does not tile ends.
+                        const int sx = s % w - dx, sy = s / w - dy;
+                        if (!periodic && (sx < 0 || sy < 0 || sx >= w || sy >= h)) continue;
+                        const int c = wrap(sy, h) * w + wrap(sx, w);
                         candidates.insert(c);
                         const LevelAnalysis& level = analysis.levels[0];
                         for (int j = 0; j < k - 1; ++j) candidates.insert(level.similar[c * level.candidates + j]);
@@ -115,6 +118,7 @@ TEST_CASE("k-coherence synthesis: each texel is the best of its k-coherence cand
                         }
                         return sum;
                     };
+                    if (candidates.empty()) continue;  // a fresh copy from a random texel
                     double best = 1e300;
                     for (int c : candidates) best = std::min(best, cost(c));
                     const int chosen = coord(x, y);
@@ -122,7 +126,7 @@ TEST_CASE("k-coherence synthesis: each texel is the best of its k-coherence cand
                     CHECK(cost(chosen) <= best + 1e-4);
                     ++checked;
                 }
-            CHECK(checked == out.width * out.height - 1);
+            CHECK(checked > out.width * out.height * 9 / 10);
         }
 }
 
