@@ -193,8 +193,15 @@ private:
             }
             const std::int32_t c = cy * a_.width + cx;
             add_candidate(c);
-            const int extra = std::min(k_ - 1, a_.candidates);
-            const std::int32_t* similar = a_.similar.data() + static_cast<std::size_t>(c) * a_.candidates;
+        }
+        // Then each continuing copy's k - 1 most similar texels: on a tie
+        // the earlier candidate wins, so a copy continues where it can (a
+        // flat region, where every candidate ties, is walked through as the
+        // sample has it rather than left for its lowest-numbered texel).
+        const std::size_t continuing = candidates_.size();
+        const int extra = std::min(k_ - 1, a_.candidates);
+        for (std::size_t b = 0; b < continuing; ++b) {
+            const std::int32_t* similar = a_.similar.data() + static_cast<std::size_t>(candidates_[b]) * a_.candidates;
             for (int j = 0; j < extra; ++j) add_candidate(similar[j]);
         }
         // No neighbour yet, or none whose copy continues inside the sample:
@@ -215,7 +222,7 @@ private:
         for (const std::int32_t c : candidates_) {
             const int cx = c % a_.width, cy = c / a_.width;
             // Summed until it exceeds the best so far; only a complete sum
-            // may win (or tie, won by the lower texel index).
+            // below it wins.
             float cost = 0;
             std::size_t i = 0;
             for (; i < known; ++i) {
@@ -223,7 +230,7 @@ private:
                 cost += distance_[static_cast<std::size_t>(known_texton_[i]) * t + a_.texton[s]];
                 if (cost > best_cost) break;
             }
-            if (i == known && (cost < best_cost || (cost == best_cost && c < best))) {
+            if (i == known && cost < best_cost) {
                 best_cost = cost;
                 best = c;
             }
