@@ -29,4 +29,29 @@ Status write_float_artefact(AtomicOutput& out, const OIIO::ImageSpec& spec, cons
     return out.commit();
 }
 
+Status write_float_artefact_parts(AtomicOutput& out, std::vector<OIIO::ImageSpec> specs,
+                                  const std::vector<std::vector<float>>& pixels)
+{
+    const std::string& path = out.destination();
+    for (OIIO::ImageSpec& spec : specs) {
+        spec.full_x = spec.full_y = 0;
+        spec.full_width = specs[0].width;
+        spec.full_height = specs[0].height;
+    }
+    auto writer = OIIO::ImageOutput::create(out.temp_path());
+    if (!writer) return runtime_error("OpenImageIO cannot write EXR: " + OIIO::geterror());
+    if (specs.size() > 1 && !writer->supports("multiimage"))
+        return runtime_error("OpenImageIO's writer for '" + path + "' cannot write several subimages");
+    if (!writer->open(out.temp_path(), static_cast<int>(specs.size()), specs.data()))
+        return io_error("cannot write '" + path + "': " + writer->geterror());
+    for (std::size_t s = 0; s < specs.size(); ++s) {
+        if (s > 0 && !writer->open(out.temp_path(), specs[s], OIIO::ImageOutput::AppendSubimage))
+            return io_error("cannot write '" + path + "': " + writer->geterror());
+        if (!writer->write_image(OIIO::TypeDesc::FLOAT, pixels[s].data()))
+            return io_error("cannot write '" + path + "': " + writer->geterror());
+    }
+    if (!writer->close()) return io_error("cannot write '" + path + "': " + writer->geterror());
+    return out.commit();
+}
+
 }  // namespace cmfilter

@@ -10,6 +10,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <string>
+#include <vector>
 
 namespace cmfilter {
 
@@ -21,5 +22,11 @@ Status check_artefact_kind(const OIIO::ImageSpec& spec, const std::string& path,
 // Writes `spec`'s pixels (float, interleaved) to out's temporary file and
 // commits it to its destination.
 Status write_float_artefact(AtomicOutput& out, const OIIO::ImageSpec& spec, const float* pixels);
+
+// A multi-part artefact: specs[i]'s float pixels from pixels[i], every part
+// given specs[0]'s display window (OpenEXR multi-part files share one), to
+// out's temporary file, then committed.
+Status write_float_artefact_parts(AtomicOutput& out, std::vector<OIIO::ImageSpec> specs,
+                                  const std::vector<std::vector<float>>& pixels);
 
 }  // namespace cmfilter

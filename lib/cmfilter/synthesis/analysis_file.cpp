@@ -125,26 +125,7 @@ Status write_analysis_exr(const std::string& path, const SampleAnalysis& analysi
         pixels.push_back(level.dot);
     }
 
-    // The parts of a multi-part OpenEXR file share one display window: level 0's.
-    for (OIIO::ImageSpec& spec : specs) {
-        spec.full_x = spec.full_y = 0;
-        spec.full_width = analysis.levels[0].width;
-        spec.full_height = analysis.levels[0].height;
-    }
-    auto writer = OIIO::ImageOutput::create(out->temp_path());
-    if (!writer) return runtime_error("OpenImageIO cannot write EXR: " + OIIO::geterror());
-    if (!writer->supports("multiimage"))
-        return runtime_error("OpenImageIO's writer for '" + path + "' cannot write several subimages");
-    if (!writer->open(out->temp_path(), static_cast<int>(specs.size()), specs.data()))
-        return io_error("cannot write '" + path + "': " + writer->geterror());
-    for (std::size_t s = 0; s < specs.size(); ++s) {
-        if (s > 0 && !writer->open(out->temp_path(), specs[s], OIIO::ImageOutput::AppendSubimage))
-            return io_error("cannot write '" + path + "': " + writer->geterror());
-        if (!writer->write_image(OIIO::TypeDesc::FLOAT, pixels[s].data()))
-            return io_error("cannot write '" + path + "': " + writer->geterror());
-    }
-    if (!writer->close()) return io_error("cannot write '" + path + "': " + writer->geterror());
-    return out->commit();
+    return write_float_artefact_parts(*out, std::move(specs), pixels);
 }
 
 Expected<SampleAnalysis> read_analysis_exr(const std::string& path)

@@ -207,7 +207,9 @@ Expected<OutputImage> render_levels(const CoordinateMap& map, const std::vector<
 }
 
 // Patches: each kept offset's footprint box read exactly from the sample's
-// summed-area table, weighted by its share.
+// summed-area table, weighted by its share; the share of the pieces not kept
+// (a footprint of more pieces than `patches`, at coarse LODs) at the mean of
+// the full-size output, what a footprint of many pieces tends to.
 Expected<OutputImage> render_patches(const CoordinateMap& map, const SampleImage& sample, int lod, int patches,
                                      int threads)
 {
@@ -218,20 +220,32 @@ Expected<OutputImage> render_patches(const CoordinateMap& map, const SampleImage
     const int step = 1 << lod;
     const int c = sample.channels;
     OutputImage out = blank_output(level->width, level->height, c);
+    // The mean of the full-size output: the sample's texels weighted by how
+    // often the map copies each.
+    std::vector<double> mean(c, 0.0);
+    for (std::size_t t = 0; t < full.texels(); ++t) {
+        const float* v = sample.pixels.data() + (static_cast<std::size_t>(full.y(t)) * sample.width + full.x(t)) * c;
+        for (int ch = 0; ch < c; ++ch) mean[ch] += v[ch];
+    }
+    for (double& m : mean) m /= static_cast<double>(std::max<std::size_t>(full.texels(), 1));
     parallel_for(out.height, threads, [&](int j) {
         std::vector<double> box(c), acc(c);
         for (int i = 0; i < out.width; ++i) {
             const Footprint f = footprint(i, j, step, full.width, full.height);
             const std::size_t texel = static_cast<std::size_t>(j) * out.width + i;
             std::fill(acc.begin(), acc.end(), 0.0);
+            double rest = 1;
             for (int k = 0; k < patches; ++k) {
                 const float* e = level->entry(texel, k);
                 if (e[2] <= 0) break;
+                rest -= e[2];
                 sums.box_mean(static_cast<std::int64_t>(f.x0) + static_cast<std::int64_t>(e[0]),
                               static_cast<std::int64_t>(f.y0) + static_cast<std::int64_t>(e[1]), f.width(), f.height(),
                               box.data());
                 for (int ch = 0; ch < c; ++ch) acc[ch] += e[2] * box[ch];
             }
+            if (rest > 1e-6)
+                for (int ch = 0; ch < c; ++ch) acc[ch] += rest * mean[ch];
             for (int ch = 0; ch < c; ++ch) out.pixels[texel * c + ch] = static_cast<float>(acc[ch]);
         }
     });

@@ -61,7 +61,7 @@ Expected<OutputImage> render_at_lod(const CoordinateMap& map, const SampleImage&
 // A patch level: per footprint of level L, `patches` entries of (dx, dy,
 // share): the offset (sample texel - output texel, full-size texels) of a
 // piece and the share of the footprint it covers, most common first; unused
-// entries have share 0. Shares sum to 1. Offsets into a periodic sample
+// entries have share 0. A share is the fraction of the whole footprint: they sum to 1 when the footprint holds at most `patches` pieces, and render_at_lod reads what is left at the full-size output's mean. Offsets into a periodic sample
 // (reads wrap) are wrapped into [0, W) x [0, H) of the map's level-0 sample,
 // so that a piece copied across the sample's edge keeps one offset. Ties
 // between offsets as common are kept by lower (dy, dx). BadInput naming

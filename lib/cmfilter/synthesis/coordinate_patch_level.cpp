@@ -79,8 +79,9 @@ Expected<PatchLevel> build_patch_level(const CoordinateMap& map, int lod, int pa
             // Most common first; a tie keeps the lower (dy, dx), the earlier run.
             std::stable_sort(runs.begin(), runs.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
             const std::size_t kept = std::min<std::size_t>(runs.size(), static_cast<std::size_t>(patches));
-            double total = 0;
-            for (std::size_t k = 0; k < kept; ++k) total += runs[k].first;
+            // Shares of the whole footprint: what the kept pieces leave is
+            // read at the sample's mean (render_at_lod).
+            const double total = static_cast<double>(offsets.size());
             float* out = level.entries.data() + (static_cast<std::size_t>(j) * level.width + i) * patches * 3;
             for (std::size_t k = 0; k < kept; ++k) {
                 const auto& offset = offsets[runs[k].second];
