@@ -118,11 +118,16 @@ bash "$root/examples/synth_samples.sh" "$cmfilter" "$out/synthesis" 2>/dev/null 
 syn=$out/synthesis
 for sample in gravel.png terrain.png; do
   name=${sample%.png}
+  # The samples were just made again: an analysis from an earlier run names
+  # the earlier files' hash.
+  rm -f "$syn/$name-analysis.exr"
   "$cmfilter" synth "$syn/$sample" --levels 3 -k 3 --size 256x256 --analysis "$syn/$name-analysis.exr" \
     -o "$syn/$name-coords.exr" --preview "$syn/$name-256.png" --quality \
-    | awk -v s="$name" '/coherence/ { printf "  %-9s coherence %s (tiling %s), seams %s of pairs\n", s, $2, $4, $11 }'
+    | awk -v s="$name" '/coherence/ { sub(/\),/, "", $4); sub(/\)/, "", $19);
+        printf "  %-8s coherence %.3f (tiling %.3f), seams on %.1f%% of pairs at contrast %.2f (tiling %.1f%% at %.2f)\n",
+               s, $2, $4, 100 * $10, $15, 100 * $17, $19 }'
 done
-"$cmfilter" synth "$out/stacks/multiview/btf.json" --periodic --levels 3 -k 3 --size 256x256 \
+"$cmfilter" synth "$out/stacks/multiview/btf.json" --levels 3 -k 3 --size 256x256 \
   -o "$syn/multiview-coords.exr" -q
 "$cmfilter" fit "$out/stacks/multiview/view-00/stack.lp" --model ptm-rgb -o "$syn/multiview-view-00.exr" -q
 for method in reference patches naive; do
@@ -131,7 +136,7 @@ for method in reference patches naive; do
 done
 for method in patches naive; do
   "$cmfilter" compare "$syn/multiview-lod2-reference.exr" "$syn/multiview-lod2-$method.exr" \
-    | awk -v m="$method" '/CIEDE2000/ { printf "  BTF through its PTM at LOD 2, %-8s dE00 mean %s\n", m, $3 }'
+    | awk -v m="$method" '/dE2000 mean/ { printf "  BTF through its PTM at LOD 2, %-8s CIEDE2000 mean %.3f against the reference\n", m, $3 }'
 done
 
 echo
