@@ -6,6 +6,10 @@
 // texton distances (sample_analysis.h). Candidates (figure 3): for each
 // neighbour p_i already synthesised at offset o_i, the sample texel
 // s(p_i) - o_i (k = 1, Ashikhmin 2001) and its k - 1 most similar texels.
+// On a sample that does not tile, a copy that would leave it ends (no
+// candidate); with no candidate a fresh copy starts at a random texel. On a
+// tie the earlier candidate wins: continuing copies, nearest neighbour
+// first, before their similar texels.
 // The first pass sees the causal half of the (2n + 1)^2 window (the rows
 // above, the texels to the left) plus any texel seeded from the coarser
 // level; each seeded texel is then synthesised again with its whole window.
