@@ -13,13 +13,15 @@ const char* const kAnalysisFlags[] = {"--levels", "--textons",  "--candidates", 
 
 void add_sample_analysis_options(CLI::App& app, SampleAnalysisArgs& args)
 {
-    app.add_option("--levels", args.levels, "Pyramid levels analysed (hierarchical synthesis uses up to as many)")
+    app.add_option(
+           "--levels", args.levels,
+           "Pyramid levels analysed and synthesised (synth reusing an analysis: all of its levels unless given)")
         ->capture_default_str();
     app.add_option("--textons", args.textons,
                    "k-means textons per level (0: min(2000, texels / 4), as the paper's 1000-2000 for 64 x 64)")
         ->capture_default_str();
     app.add_option("--candidates", args.candidates,
-                   "Most similar texels kept per texel (m): the largest k synthesis may use")
+                   "Most similar texels kept per texel (m): synthesis may use k up to m + 1")
         ->capture_default_str();
     app.add_option("--neighbourhood", args.neighbourhood,
                    "n of the (2n + 1) x (2n + 1) neighbourhoods compared for the candidate sets")
@@ -27,8 +29,9 @@ void add_sample_analysis_options(CLI::App& app, SampleAnalysisArgs& args)
     app.add_option("--select", args.select_images,
                    "Representative images kept for the features (0: all; the paper keeps about 150)")
         ->capture_default_str();
-    app.add_flag("--periodic", args.periodic,
-                 "The sample tiles (a synthetic tile): neighbourhoods wrap around its edges instead of clamping");
+    app.add_flag(
+        "--periodic", args.periodic,
+        "The sample tiles (a synthetic tile): neighbourhoods and copies wrap around its edges (synthesis then reproduces a tiling; docs/synthesis.md)");
     app.add_option("--seed", args.seed, "Seed of the k-means start (and, for synth, of the synthesis)")
         ->capture_default_str();
     app.add_option("--colorspace", args.colorspace,
