@@ -3,7 +3,10 @@
 // one subcommand, prints its error once and exits with the error's code.
 #include "command.h"
 
+#include "cmfilter/util/available_cores.h"
 #include "cmfilter/util/version.h"
+
+#include <OpenImageIO/imageio.h>
 
 #include <iostream>
 #include <vector>
@@ -11,6 +14,11 @@
 int main(int argc, char** argv)
 {
     using namespace cmfilter;
+    // OpenImageIO's and OpenEXR's own pools get the cores this process may
+    // use (its affinity and cgroup quota), not every core of the machine.
+    const int cores = available_cores();
+    OIIO::attribute("threads", cores);
+    OIIO::attribute("exr_threads", cores);
     CLI::App app{"cmfilter: filters colour-mapped textures and surfaces correctly at every scale\n"
                  "(Heitz et al. 2013, \"Filtering Color Mapped Textures and Surfaces\").",
                  "cmfilter"};

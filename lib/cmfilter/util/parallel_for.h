@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 // A minimal static-schedule parallel loop over [0, count) on std::thread.
-// threads <= 0 uses every hardware thread; threads == 1 runs inline.
+// threads <= 0 uses every core this process may use (available_cores.h:
+// its affinity mask and cgroup quota); threads == 1 runs inline.
 #pragma once
+
+#include "cmfilter/util/available_cores.h"
 
 #include <algorithm>
 #include <atomic>
@@ -13,7 +16,7 @@ namespace cmfilter {
 inline int resolve_thread_count(int threads)
 {
     if (threads > 0) return threads;
-    return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    return available_cores();
 }
 
 template <typename Body>
