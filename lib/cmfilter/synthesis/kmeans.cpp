@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/synthesis/kmeans.h"
 
+#include "cmfilter/synthesis/synthesis_random.h"
+
 #include "cmfilter/util/parallel_for.h"
 
 #include <Eigen/Dense>
@@ -20,24 +22,6 @@ constexpr int kBlock = 256;
 
 using RowMatrix = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 using ConstRowMap = Eigen::Map<const RowMatrix>;
-
-// SplitMix64 (Steele, Lea & Flood 2014): a small deterministic generator of
-// 64-bit words, and doubles in [0, 1) from their top 53 bits.
-class SplitMix64 {
-public:
-    explicit SplitMix64(std::uint64_t seed) : state_(seed) {}
-    std::uint64_t next()
-    {
-        std::uint64_t z = (state_ += 0x9e3779b97f4a7c15ULL);
-        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-        z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-        return z ^ (z >> 31);
-    }
-    double uniform() { return static_cast<double>(next() >> 11) * (1.0 / 9007199254740992.0); }
-
-private:
-    std::uint64_t state_;
-};
 
 int block_count(std::size_t count) { return static_cast<int>((count + kBlock - 1) / kBlock); }
 

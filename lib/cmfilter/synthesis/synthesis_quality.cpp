@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/synthesis/synthesis_quality.h"
 
+#include "cmfilter/synthesis/synthesis_random.h"
+
 #include "cmfilter/util/parallel_for.h"
 
 #include <algorithm>
@@ -17,14 +19,6 @@ namespace {
 constexpr int kRandomPairs = 4096;
 constexpr std::uint64_t kPairSeed = 0x636d66696c746572ull;
 constexpr std::uint64_t kGridSeed = 0x677269642d736565ull;
-
-std::uint64_t splitmix64(std::uint64_t& state)
-{
-    std::uint64_t z = (state += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-}
 
 int wrap(int i, int n) { return ((i % n) + n) % n; }
 int clamp_index(int i, int n) { return std::min(std::max(i, 0), n - 1); }
@@ -51,7 +45,7 @@ std::vector<std::size_t> coherence_grid(int width, int height, int wanted)
     }
     const int gx = std::clamp(static_cast<int>(std::lround(std::sqrt(double(wanted) * width / height))), 1, width);
     const int gy = std::clamp(static_cast<int>(std::lround(double(wanted) / gx)), 1, height);
-    std::uint64_t state = kGridSeed;
+    SplitMix64 state(kGridSeed);
     for (int j = 0; j < gy; ++j)
         for (int i = 0; i < gx; ++i) {
             // Cell [x0, x1) x [y0, y1); 53 random bits place the texel in it.
@@ -59,8 +53,8 @@ std::vector<std::size_t> coherence_grid(int width, int height, int wanted)
             const int x1 = static_cast<int>(static_cast<long long>(i + 1) * width / gx);
             const int y0 = static_cast<int>(static_cast<long long>(j) * height / gy);
             const int y1 = static_cast<int>(static_cast<long long>(j + 1) * height / gy);
-            const double rx = static_cast<double>(splitmix64(state) >> 11) / 9007199254740992.0;
-            const double ry = static_cast<double>(splitmix64(state) >> 11) / 9007199254740992.0;
+            const double rx = state.uniform();
+            const double ry = state.uniform();
             const int x = std::min(x1 - 1, x0 + static_cast<int>(rx * (x1 - x0)));
             const int y = std::min(y1 - 1, y0 + static_cast<int>(ry * (y1 - y0)));
             grid.push_back(static_cast<std::size_t>(y) * width + x);
@@ -152,12 +146,12 @@ Expected<SynthesisQuality> measure_synthesis(const CoordinateMap& map, const Sam
     double mean_root = 0;
     for (double d : root_distance) mean_root += d;
     mean_root /= static_cast<double>(root_distance.size());
-    std::uint64_t state = kPairSeed;
+    SplitMix64 state(kPairSeed);
     double pair_distance = 0;
     const std::size_t sample_texels = sample.texels();
     for (int r = 0; r < kRandomPairs; ++r) {
-        const std::size_t a = splitmix64(state) % sample_texels;
-        const std::size_t b = splitmix64(state) % sample_texels;
+        const std::size_t a = state.next() % sample_texels;
+        const std::size_t b = state.next() % sample_texels;
         pair_distance += texton_distance(sample, sample.texton[a], sample.texton[b]);
     }
     pair_distance /= kRandomPairs;
