@@ -5,8 +5,6 @@
 // Memory is the sample image (or fit) plus the map, not the full surface.
 #include "command.h"
 
-#include "cmfilter/stack/fit_file.h"
-#include "cmfilter/stack/lafortune_file.h"
 #include "cmfilter/synthesis/coordinate_lookup.h"
 #include "cmfilter/synthesis/coordinate_map_file.h"
 #include "cmfilter/synthesis/synthesis_sample.h"
@@ -14,7 +12,6 @@
 #include "cmfilter/util/atomic_output.h"
 #include "cmfilter/util/stopwatch.h"
 
-#include <OpenImageIO/imageio.h>
 #include <nlohmann/json.hpp>
 
 #include <iostream>
@@ -42,19 +39,6 @@ struct SynthApplyArgs {
     bool json = false;
     bool quiet = false;
 };
-
-// A fit rather than the sample: .ptm, .rti, or an EXR whose cmfilter:kind
-// is a fit's.
-bool is_fit_path(const std::string& path)
-{
-    const std::string ext = lowercase_extension(path);
-    if (ext == ".ptm" || ext == ".rti") return true;
-    if (ext != ".exr") return false;
-    auto in = OIIO::ImageInput::open(path);
-    if (!in) return false;
-    const std::string kind = in->spec().get_string_attribute("cmfilter:kind");
-    return kind == kLinearFitKind || kind == kLafortuneFitKind;
-}
 
 Status run(const SynthApplyArgs& args, const CLI::App& app)
 {
@@ -90,7 +74,8 @@ Status run(const SynthApplyArgs& args, const CLI::App& app)
     bool hash_checked = false;
     if (!args.no_hash_check && !map->info.sample_hash.empty()) {
         auto files = sample_image_files(args.source);
-        if (files && !is_fit_path(args.source)) {
+        const auto fit = is_fit_source(args.source);
+        if (files && !(fit && *fit)) {
             auto hash = sample_content_hash(*files);
             if (!hash) return hash.error();
             if (*hash != map->info.sample_hash)

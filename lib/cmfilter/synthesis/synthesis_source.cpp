@@ -274,4 +274,11 @@ Expected<SourceImage> load_source_image(const SourceOptions& options, const Colo
     return runtime_error("unknown source kind");
 }
 
+Expected<bool> is_fit_source(const std::string& path)
+{
+    auto kind = source_kind(path);
+    if (!kind) return kind.error();
+    return *kind == SourceKind::Fit;
+}
+
 }  // namespace cmfilter

@@ -39,4 +39,9 @@ struct SourceImage {
 // stack's images has, a light below the horizon, a view for a linear fit.
 Expected<SourceImage> load_source_image(const SourceOptions& options, const ColorConfig& config);
 
+// Whether `path` is a fit rather than a sample, as load_source_image decides:
+// a .ptm, an .rti, or an EXR whose cmfilter:kind is a fit's. Io when an EXR
+// cannot be opened.
+Expected<bool> is_fit_source(const std::string& path);
+
 }  // namespace cmfilter
