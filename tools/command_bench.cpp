@@ -47,7 +47,8 @@ Status write_text(const std::string& path, const std::string& text)
     {
         std::ofstream f(out->temp_path());
         f << text;
-        if (!f) return io_error("cannot write '" + path + "'");
+        f.close();
+        if (!f) return out->write_error("");
     }
     return out->commit();
 }

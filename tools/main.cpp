@@ -9,6 +9,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <iostream>
+#include <new>
 #include <vector>
 
 int main(int argc, char** argv)
@@ -56,7 +57,17 @@ int main(int argc, char** argv)
 
     for (const auto& command : commands) {
         if (!command.app->parsed()) continue;
-        Status status = command.run();
+        // The library refuses what it can see will not fit before it
+        // allocates (util/memory_budget.h); an allocation that fails anyway
+        // ends the command here, its outputs' temporaries removed on the way.
+        Status status = runtime_error("");
+        try {
+            status = command.run();
+        } catch (const std::bad_alloc&) {
+            std::cerr << prefix() << ": error: out of memory: an allocation failed (the inputs need more memory "
+                      << "than this process may use)\n";
+            return static_cast<int>(ErrorKind::Runtime);
+        }
         if (!status) {
             std::cerr << prefix() << ": error: " << cli::name_flags(status.error().message, command.flags) << "\n";
             return static_cast<int>(status.error().kind);

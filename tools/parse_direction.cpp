@@ -2,6 +2,7 @@
 // "x,y,z" direction option values (light and view directions).
 #include "command.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
@@ -24,10 +25,12 @@ Expected<Vec3> parse_direction(const std::string& option, const std::string& tex
             return bad_input(option + " '" + text + "': '" + field + "' is not a finite number (expected x,y,z)");
         start = comma + 1;
     }
-    const Vec3 d{v[0], v[1], v[2]};
-    const double len = length(d);
-    if (!(len > 0)) return bad_input(option + " '" + text + "' is zero (expected a direction)");
-    const Vec3 unit = d / len;
+    // Scaled by its largest component first, so that the length of a huge
+    // (finite) vector does not overflow to infinity.
+    const double largest = std::max({std::fabs(v[0]), std::fabs(v[1]), std::fabs(v[2])});
+    if (!(largest > 0)) return bad_input(option + " '" + text + "' is zero (expected a direction)");
+    const Vec3 d{v[0] / largest, v[1] / largest, v[2] / largest};
+    const Vec3 unit = d / length(d);
     if (unit.z < 0)
         return bad_input(option + " '" + text + "' is below the horizon (expected z >= 0, towards the camera)");
     return unit;

@@ -33,8 +33,8 @@ if [ "$want_exit" != 0 ]; then
 fi
 for p in "${absent[@]+"${absent[@]}"}"; do
   if [ -e "$p" ]; then echo "FAIL: $p exists but should not"; fail=1; fi
-  # AtomicOutput's temporary files are ".<stem>.tmp-<random><ext>" beside the
-  # destination; only this output's own count (other tests write beside it).
+  # AtomicOutput's temporary files are ".<stem>.tmp-<host>-<pid>-<hex><ext>"
+  # beside the destination; only this output's own count (other tests write beside it).
   dir=$(dirname "$p"); base=$(basename "$p"); stem=${base%.*}
   if [ -d "$dir" ] && ls -a "$dir" | grep -qF ".$stem.tmp-"; then echo "FAIL: temporary file of $p left in $dir"; fail=1; fi
 done

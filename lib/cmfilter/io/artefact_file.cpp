@@ -21,11 +21,8 @@ Status write_float_artefact(AtomicOutput& out, const OIIO::ImageSpec& spec, cons
 {
     auto writer = OIIO::ImageOutput::create(out.temp_path());
     if (!writer) return runtime_error("OpenImageIO cannot write EXR: " + OIIO::geterror());
-    if (!writer->open(out.temp_path(), spec) || !writer->write_image(OIIO::TypeDesc::FLOAT, pixels) ||
-        !writer->close()) {
-        std::string why = writer->geterror();
-        return io_error("cannot write '" + out.destination() + "': " + why);
-    }
+    if (!writer->open(out.temp_path(), spec) || !writer->write_image(OIIO::TypeDesc::FLOAT, pixels) || !writer->close())
+        return out.write_error(writer->geterror());
     return out.commit();
 }
 
@@ -43,14 +40,13 @@ Status write_float_artefact_parts(AtomicOutput& out, std::vector<OIIO::ImageSpec
     if (specs.size() > 1 && !writer->supports("multiimage"))
         return runtime_error("OpenImageIO's writer for '" + path + "' cannot write several subimages");
     if (!writer->open(out.temp_path(), static_cast<int>(specs.size()), specs.data()))
-        return io_error("cannot write '" + path + "': " + writer->geterror());
+        return out.write_error(writer->geterror());
     for (std::size_t s = 0; s < specs.size(); ++s) {
         if (s > 0 && !writer->open(out.temp_path(), specs[s], OIIO::ImageOutput::AppendSubimage))
-            return io_error("cannot write '" + path + "': " + writer->geterror());
-        if (!writer->write_image(OIIO::TypeDesc::FLOAT, pixels[s].data()))
-            return io_error("cannot write '" + path + "': " + writer->geterror());
+            return out.write_error(writer->geterror());
+        if (!writer->write_image(OIIO::TypeDesc::FLOAT, pixels[s].data())) return out.write_error(writer->geterror());
     }
-    if (!writer->close()) return io_error("cannot write '" + path + "': " + writer->geterror());
+    if (!writer->close()) return out.write_error(writer->geterror());
     return out.commit();
 }
 

@@ -7,7 +7,8 @@
 #include "cmfilter/util/parallel_for.h"
 
 #include <algorithm>
-#include <future>
+#include <optional>
+#include <thread>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -88,8 +89,9 @@ Expected<DriverImage> read_driver(const DriverReadOptions& options)
     d.channel_index = *channel;
     if (*channel < static_cast<int>(spec.channelnames.size())) d.channel = spec.channelnames[*channel];
     d.pixel_type = spec.format.c_str();
+    if (auto fits = check_image_allocation(spec, path, 1); !fits) return fits.error();
     d.values.resize(static_cast<std::size_t>(d.width) * d.height);
-    if (!in->read_image(0, 0, *channel, *channel + 1, OIIO::TypeDesc::FLOAT, d.values.data()))
+    if (!read_float_pixels(*in, 0, 0, *channel, *channel + 1, d.values.data()))
         return io_error("cannot read the pixels of '" + path + "': " + in->geterror());
     in.reset();
 
@@ -139,13 +141,16 @@ Expected<DriverImage> read_driver(const DriverReadOptions& options)
 
 Expected<HashedDriver> read_driver_and_hash(const DriverReadOptions& options)
 {
-    // The hash reads the file a second time; do it beside the decode.
-    auto hash = std::async(std::launch::async, sha256_file_hex, options.path);
+    // The hash reads the file a second time; do it beside the decode, on a
+    // thread joined before the digest is read (a synchronisation
+    // ThreadSanitizer sees, as a future's wait is not).
+    std::optional<Expected<std::string>> digest;
+    std::thread hash([&]() { digest.emplace(sha256_file_hex(options.path)); });
     auto driver = read_driver(options);
-    auto digest = hash.get();
+    hash.join();
     if (!driver) return driver.error();
-    if (!digest) return digest.error();
-    return HashedDriver{std::move(*driver), std::move(*digest)};
+    if (!*digest) return digest->error();
+    return HashedDriver{std::move(*driver), std::move(**digest)};
 }
 
 }  // namespace cmfilter

@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/io/image_reading.h"
 
+#include "cmfilter/util/memory_budget.h"
+
 #include <OpenImageIO/imageio.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -36,6 +39,38 @@ Expected<std::unique_ptr<OIIO::ImageInput>> open_image_input(const std::string& 
     return Expected<std::unique_ptr<OIIO::ImageInput>>(std::move(in));
 }
 
+Status check_image_allocation(const OIIO::ImageSpec& spec, const std::string& path, int channels, int copies)
+{
+    // The floats, and the buffer of native rows the image library converts
+    // them from: it allocates 256 rows (its "read_chunk"), however few the
+    // image has, or a row of tiles.
+    const double rows = std::max(256, spec.tile_height);
+    const double bytes = double(spec.width) * double(spec.height) * double(channels) * sizeof(float) * copies +
+                         double(spec.width) * rows * double(spec.pixel_bytes(true));
+    return check_allocation(bytes, "'" + path + "' (" + std::to_string(spec.width) + " x " +
+                                       std::to_string(spec.height) + " pixels, " + std::to_string(channels) +
+                                       (channels == 1 ? " channel)" : " channels)"));
+}
+
+bool read_float_pixels(OIIO::ImageInput& in, int subimage, int miplevel, int chbegin, int chend, float* out)
+{
+    const OIIO::ImageSpec spec = in.spec(subimage, miplevel);
+    // Tiled images are read a row of tiles at a time by the library itself
+    // (its read_scanlines would divide by a strip height of 0 on them).
+    if (spec.tile_width > 0) return in.read_image(subimage, miplevel, chbegin, chend, OIIO::TypeDesc::FLOAT, out);
+    const std::size_t row = static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(chend - chbegin);
+    constexpr std::size_t kStripValues = std::size_t(4) << 20;  // 16 MB of floats
+    const int rows = static_cast<int>(std::max<std::size_t>(
+        1, std::min<std::size_t>(kStripValues / std::max<std::size_t>(row, 1), std::size_t(spec.height))));
+    for (int y = 0; y < spec.height; y += rows) {
+        const int end = std::min(spec.height, y + rows);
+        if (!in.read_scanlines(subimage, miplevel, spec.y + y, spec.y + end, 0, chbegin, chend, OIIO::TypeDesc::FLOAT,
+                               out + static_cast<std::size_t>(y) * row))
+            return false;
+    }
+    return true;
+}
+
 Expected<ImageData> read_image(const std::string& path)
 {
     auto opened = open_image_input(path);
@@ -56,8 +91,9 @@ Expected<ImageData> read_image(const std::string& path)
     img.colorspace_attr = spec.get_string_attribute("colorInteropID");
     if (img.colorspace_attr.empty()) img.colorspace_attr = spec.get_string_attribute("oiio:ColorSpace");
     img.gamma_attr = spec.get_float_attribute("oiio:Gamma", 0.0f);
+    if (auto fits = check_image_allocation(spec, path, img.channels); !fits) return fits.error();
     img.pixels.resize(static_cast<std::size_t>(img.width) * img.height * img.channels);
-    if (!in->read_image(0, 0, 0, img.channels, OIIO::TypeDesc::FLOAT, img.pixels.data())) {
+    if (!read_float_pixels(*in, 0, 0, 0, img.channels, img.pixels.data())) {
         std::string why = in->geterror();
         return io_error("cannot read the pixels of '" + path + "': " + why);
     }

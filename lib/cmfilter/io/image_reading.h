@@ -27,7 +27,23 @@ struct ImageData {
     float gamma_attr = 0;         // "oiio:Gamma" when declared, else 0
 };
 
+// Refuses (BadInput, before reading pixels) an image whose float pixels do
+// not fit in what this process may allocate (check_image_allocation).
 Expected<ImageData> read_image(const std::string& path);
+
+// Reads channels [chbegin, chend) of subimage `subimage`, MIP level
+// `miplevel` of `in` as float into `out` (width x height x channels, top row
+// first) in strips of rows of at most a few megabytes each (a tiled image:
+// a row of tiles at a time), so the image library never holds more than one
+// strip of its own beside `out`. False
+// (with in's error set) when a read fails.
+bool read_float_pixels(OIIO::ImageInput& in, int subimage, int miplevel, int chbegin, int chend, float* out);
+
+// BadInput naming `path` and its size when `channels` float values for each
+// of `spec`'s width x height pixels (times `copies`), with the native rows
+// OpenImageIO converts them from (up to 256 rows), exceed the memory budget
+// (util/memory_budget.h); what a reader calls before it allocates them.
+Status check_image_allocation(const OIIO::ImageSpec& spec, const std::string& path, int channels, int copies = 1);
 
 // Opens `path` for reading after the same checks: Io when it is missing, a
 // directory or unreadable; BadInput when it is empty, not an image, or has no

@@ -63,10 +63,8 @@ Status write_rgb_image(const std::string& path, int width, int height, int chann
     if (!writer->open(out->temp_path(), spec) ||
         !(exr ? writer->write_image(OIIO::TypeDesc::FLOAT, pixels.data())
               : writer->write_image(OIIO::TypeDesc::UINT8, codes.data())) ||
-        !writer->close()) {
-        std::string why = writer->geterror();
-        return io_error("cannot write '" + path + "': " + why);
-    }
+        !writer->close())
+        return out->write_error(writer->geterror());
     return out->commit();
 }
 

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 
 namespace cmfilter {
@@ -42,9 +43,14 @@ private:
 };
 
 // The lattice cell of coordinate x: its index modulo the period, for LatticeHash.
+// Reduced in double (exact for an integral value) so that a coordinate past
+// long long's range, as many octaves reach, is not cast out of range.
 inline int lattice_index(double floored_x)
 {
-    return static_cast<int>(static_cast<long long>(floored_x) & (LatticeHash::period - 1));
+    if (!std::isfinite(floored_x)) return 0;
+    double i = std::fmod(floored_x, static_cast<double>(LatticeHash::period));
+    if (i < 0) i += LatticeHash::period;
+    return static_cast<int>(i) & (LatticeHash::period - 1);
 }
 
 inline double lerp(double t, double a, double b) { return a + t * (b - a); }

@@ -94,7 +94,8 @@ Status write_noise_sigma_csv(const std::string& path, const NoiseSigmaBake& bake
                 << ',' << shortest(r.box.half_width) << ',' << r.box.footprints << ',' << r.box.samples_per_footprint
                 << ',' << shortest(r.gaussian.sigma) << ',' << shortest(r.gaussian.half_width) << ','
                 << r.gaussian.footprints << ',' << r.gaussian.samples_per_footprint << '\n';
-        if (!csv.flush()) return io_error("cannot write '" + path + "'");
+        csv.close();
+        if (!csv) return out->write_error("");
     }
     return out->commit();
 }

@@ -44,10 +44,8 @@ Status write_heatmap_png(const std::string& path, const HeatmapImage& image)
     auto writer = OIIO::ImageOutput::create(out->temp_path());
     if (!writer) return runtime_error("OpenImageIO cannot write PNG: " + OIIO::geterror());
     if (!writer->open(out->temp_path(), spec) || !writer->write_image(OIIO::TypeDesc::UINT8, codes.data()) ||
-        !writer->close()) {
-        std::string why = writer->geterror();
-        return io_error("cannot write '" + path + "': " + why);
-    }
+        !writer->close())
+        return out->write_error(writer->geterror());
     return out->commit();
 }
 

@@ -38,8 +38,9 @@ Expected<std::size_t> count_outside(const std::string& path, const MomentPyramid
 {
     auto in = open_image_input(path);
     if (!in) return in.error();
+    if (auto fits = check_image_allocation((*in)->spec(), path, 1); !fits) return fits.error();
     std::vector<float> m1(static_cast<std::size_t>(info.width) * info.height);
-    if (!(*in)->read_image(0, 0, 0, 1, OIIO::TypeDesc::FLOAT, m1.data()))
+    if (!read_float_pixels(**in, 0, 0, 0, 1, m1.data()))
         return io_error("cannot read level 0 of '" + path + "': " + (*in)->geterror());
     std::size_t outside = 0;
     for (float d : m1) {

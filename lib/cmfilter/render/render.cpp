@@ -9,6 +9,7 @@
 #include "cmfilter/scene/camera.h"
 #include "cmfilter/scene/pixel_coverage.h"
 #include "cmfilter/scene/surface_hit.h"
+#include "cmfilter/util/memory_budget.h"
 #include "cmfilter/util/parallel_for.h"
 #include "cmfilter/util/stopwatch.h"
 
@@ -187,6 +188,13 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<Material>& 
     }
     auto camera = Camera::create(scene.camera);
     if (!camera) return camera.error();
+    // The image and its per-pixel AOVs (RenderedImage), and the copies the
+    // output files are written from: at most kRenderBytesPerPixel.
+    if (auto fits = check_allocation(double(camera->width()) * camera->height() * kRenderBytesPerPixel,
+                                     "the render of '" + scene.path + "' (" + std::to_string(camera->width()) + " x " +
+                                         std::to_string(camera->height()) + " pixels)");
+        !fits)
+        return fits.error();
     // D_h's exact moments for gaussian-exact (height_moment_table.h), made
     // only for a scene with a microsurface.
     const bool microsurfaces = std::any_of(materials.begin(), materials.end(), is_microsurface);

@@ -57,6 +57,11 @@
 
 namespace cmfilter {
 
+// What a render holds per pixel at most: RenderedImage's 12 floats and a
+// byte (49 bytes), and the rows its output files are written through. The
+// peaks measured are 29 to 37 bytes a pixel (docs/reliability.md).
+inline constexpr double kRenderBytesPerPixel = 64;
+
 struct RenderedImage {
     int width = 0, height = 0;
     std::vector<float> rgb;  // scene-linear, top row first

@@ -128,8 +128,9 @@ Expected<DriverSigmaRange> largest_moment_pyramid_sigma(const std::string& path)
     std::vector<float> m;
     for (int level = 0; level < levels; ++level) {
         const OIIO::ImageSpec spec = (*in)->spec(0, level);
+        if (auto fits = check_image_allocation(spec, path, 2); !fits) return fits.error();
         m.resize(static_cast<std::size_t>(spec.width) * spec.height * 2);
-        if (!(*in)->read_image(0, level, 0, 2, OIIO::TypeDesc::FLOAT, m.data()))
+        if (!read_float_pixels(**in, 0, level, 0, 2, m.data()))
             return io_error("cannot read level " + std::to_string(level) + " of '" + path + "': " + (*in)->geterror());
         for (std::size_t i = 0; i < m.size(); i += 2) {
             const double m1 = m[i], m2 = m[i + 1];

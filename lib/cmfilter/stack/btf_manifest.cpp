@@ -94,7 +94,7 @@ Status write_btf_manifest(const std::string& path, const std::vector<BtfView>& v
         std::ofstream f(out->temp_path(), std::ios::binary);
         f << doc.dump(2) << "\n";
         f.close();
-        if (!f) return io_error("cannot write BTF manifest '" + path + "'");
+        if (!f) return out->write_error("the BTF manifest could not be written");
     }
     return out->commit();
 }

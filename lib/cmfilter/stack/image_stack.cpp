@@ -2,6 +2,7 @@
 #include "cmfilter/stack/image_stack.h"
 
 #include "cmfilter/stack/color_channels.h"
+#include "cmfilter/util/memory_budget.h"
 #include "cmfilter/util/parallel_for.h"
 
 #include <algorithm>
@@ -125,6 +126,12 @@ Expected<ImageStack> load_image_stack(const StackLoadOptions& options, const Col
     stack.channels = first->data.channels;
     stack.colorspace = stack_colorspace(first->space, options, config);
     const std::size_t per_image = stack.texels() * stack.channels;
+    if (auto fits = check_allocation(double(per_image) * n * sizeof(float),
+                                     "the stack '" + lp.path + "' (" + std::to_string(n) + " images of " +
+                                         std::to_string(stack.width) + " x " + std::to_string(stack.height) + " x " +
+                                         std::to_string(stack.channels) + ")");
+        !fits)
+        return fits.error();
     stack.pixels.resize(per_image * n);
     std::copy(first->data.pixels.begin(), first->data.pixels.end(), stack.pixels.begin());
 

@@ -187,7 +187,7 @@ Status write_light_file(const std::string& path, const std::vector<LightEntry>& 
         std::ofstream f(out->temp_path(), std::ios::binary);
         f << format_light_file(lights);
         f.close();
-        if (!f) return io_error("cannot write light file '" + path + "'");
+        if (!f) return out->write_error("the light file could not be written");
     }
     return out->commit();
 }

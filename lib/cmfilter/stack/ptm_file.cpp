@@ -167,6 +167,11 @@ Expected<LinearFit> decode_ptm(const std::string& bytes, const std::string& name
             return bad_input(where + "has scale " + std::to_string(k) + " " + quoted_header(token) +
                              ", expected a finite number");
         scale[k] = static_cast<float>(scale[k]);  // as the viewers hold it
+        // A coefficient is (byte - bias) * scale / 255 with |bias| <= 2^24:
+        // it must stay a finite float.
+        if (!(std::fabs(scale[k]) * (255.0 + (1 << 24)) / 255.0 <= std::numeric_limits<float>::max()))
+            return bad_input(where + "has scale " + std::to_string(k) + " " + quoted_header(token) +
+                             ", expected one whose coefficients fit a 32-bit float");
     }
     for (int k = 0; k < kPtmTerms; ++k) {
         std::string token;

@@ -100,10 +100,10 @@ Status write_file_bytes(const std::string& path, const std::string& bytes)
     if (!out) return out.error();
     {
         std::ofstream file(out->temp_path(), std::ios::binary);
-        if (!file) return io_error("cannot open '" + out->temp_path() + "' for writing");
+        if (!file) return out->write_error("cannot open its temporary file '" + out->temp_path() + "'");
         file.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
         file.close();
-        if (!file) return io_error("cannot write '" + path + "'");
+        if (!file) return out->write_error("");
     }
     return out->commit();
 }

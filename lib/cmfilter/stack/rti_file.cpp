@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <cstdint>
 #include <cstring>
 #include <sstream>
@@ -123,6 +124,10 @@ Expected<LinearFit> decode_rti(const std::string& bytes, const std::string& name
     for (int k = 0; k < terms; ++k) {
         if (!std::isfinite(scale[k])) return bad_input(where + "has a non-finite scale for term " + std::to_string(k));
         if (!std::isfinite(bias[k])) return bad_input(where + "has a non-finite bias for term " + std::to_string(k));
+        // A coefficient is byte / 255 * scale + bias: it must stay a finite float.
+        if (!(std::fabs(double(scale[k])) + std::fabs(double(bias[k])) <= std::numeric_limits<float>::max()))
+            return bad_input(where + "has a scale and bias for term " + std::to_string(k) +
+                             " whose coefficients overflow a 32-bit float");
     }
     pos += header_floats;
 

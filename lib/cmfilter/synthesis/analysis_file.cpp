@@ -10,11 +10,21 @@
 #include <OpenImageIO/imageio.h>
 
 #include <cmath>
+#include <cstdio>
 #include <map>
 
 namespace cmfilter {
 
 namespace {
+
+// An integral value as text, however large: casting one past long long's
+// range to print it is undefined.
+std::string integral_text(double v)
+{
+    char text[64];
+    std::snprintf(text, sizeof text, "%.0f", v);
+    return text;
+}
 
 constexpr int kFormatVersion = 1;
 // Indices are stored as floats: exact up to 2^24.
@@ -208,8 +218,9 @@ Expected<SampleAnalysis> read_analysis_exr(const std::string& path)
             if (it == column.end()) return bad("has no channel " + name + " in " + tname);
             source[static_cast<std::size_t>(c)] = it->second;
         }
+        if (auto fits = check_image_allocation(ts, path, ts.nchannels, 2); !fits) return fits.error();
         std::vector<float> tp(level.texels() * static_cast<std::size_t>(ts.nchannels));
-        if (!in->read_image(2 * l, 0, 0, ts.nchannels, OIIO::TypeDesc::FLOAT, tp.data()))
+        if (!read_float_pixels(*in, 2 * l, 0, 0, ts.nchannels, tp.data()))
             return io_error("cannot read '" + path + "': " + in->geterror());
         const std::size_t texels = level.texels();
         level.texton.resize(texels);
@@ -224,10 +235,9 @@ Expected<SampleAnalysis> read_analysis_exr(const std::string& path)
                                " at texel (" + std::to_string(t % level.width) + ", " +
                                std::to_string(t / level.width) + ")");
                 if (v < 0 || v >= limit || (c > 0 && static_cast<std::size_t>(v) == t))
-                    return bad("has " + what + " index " + std::to_string(static_cast<long long>(v)) + " in " + tname +
-                               " at texel (" + std::to_string(t % level.width) + ", " +
-                               std::to_string(t / level.width) + "); expected [0, " +
-                               std::to_string(static_cast<long long>(limit)) + ")" +
+                    return bad("has " + what + " index " + integral_text(v) + " in " + tname + " at texel (" +
+                               std::to_string(t % level.width) + ", " + std::to_string(t / level.width) +
+                               "); expected [0, " + integral_text(limit) + ")" +
                                (c > 0 ? " and not the texel itself" : ""));
                 if (c == 0) level.texton[t] = static_cast<std::int32_t>(v);
                 else
@@ -246,8 +256,9 @@ Expected<SampleAnalysis> read_analysis_exr(const std::string& path)
             return bad("has " + dname + " of " + std::to_string(ds.width) + " x " + std::to_string(ds.height) + " x " +
                        std::to_string(ds.nchannels) + "; expected " + std::to_string(level.textons) + " x " +
                        std::to_string(level.textons) + " of channel M (the level's textons)");
+        if (auto fits = check_image_allocation(ds, path, 1); !fits) return fits.error();
         level.dot.resize(static_cast<std::size_t>(level.textons) * level.textons);
-        if (!in->read_image(2 * l + 1, 0, 0, 1, OIIO::TypeDesc::FLOAT, level.dot.data()))
+        if (!read_float_pixels(*in, 2 * l + 1, 0, 0, 1, level.dot.data()))
             return io_error("cannot read '" + path + "': " + in->geterror());
         const int k = level.textons;
         for (int i = 0; i < k; ++i)

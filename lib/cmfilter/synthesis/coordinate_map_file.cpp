@@ -183,8 +183,9 @@ Expected<CoordinateMap> read_coordinate_map_exr(const std::string& path)
         }
         if (cu < 0 || cv < 0)
             return bad("has no channels u and v on subimage " + std::to_string(s) + " (" + name + ")");
+        if (auto fits = check_image_allocation(spec, path, spec.nchannels, 2); !fits) return fits.error();
         std::vector<float> px(level.texels() * static_cast<std::size_t>(spec.nchannels));
-        if (!in->read_image(s, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, px.data()))
+        if (!read_float_pixels(*in, s, 0, 0, spec.nchannels, px.data()))
             return io_error("cannot read '" + path + "': " + in->geterror());
         level.coords.resize(2 * level.texels());
         for (std::size_t t = 0; t < level.texels(); ++t) {

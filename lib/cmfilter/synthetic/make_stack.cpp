@@ -8,7 +8,9 @@
 #include "cmfilter/synthetic/synthetic_stack.h"
 #include "cmfilter/util/atomic_output.h"
 #include "cmfilter/util/sha256.h"
+#include "cmfilter/util/stale_temporary_outputs.h"
 #include "cmfilter/util/stopwatch.h"
+#include "cmfilter/util/temporary_output_name.h"
 #include "cmfilter/util/version.h"
 
 #include <nlohmann/json.hpp>
@@ -19,7 +21,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <random>
 #include <sstream>
 #include <system_error>
 
@@ -55,7 +56,7 @@ Status write_stack_record(const std::string& path, const nlohmann::json& record)
         std::ofstream f(out->temp_path());
         f << record.dump(2) << "\n";
         f.close();
-        if (!f) return io_error(path + ": cannot write the stack record");
+        if (!f) return out->write_error("the stack record could not be written");
     }
     return out->commit();
 }
@@ -92,19 +93,22 @@ Status check_views(const std::vector<Vec3>& views)
 }
 
 // A folder beside the output that every file of a run is written into
-// first (".<stem>.tmp-<random>", as AtomicOutput names its temporary files),
-// removed with what it holds unless its files were moved into place.
+// first, named as AtomicOutput names its temporary files but without the
+// extension (".<stem>.tmp-<host>-<pid>-<hex>", temporary_output_name.h),
+// removed with what it holds unless its files were moved into place. The
+// folders of runs killed before they finished are removed by the next run
+// (stale_temporary_outputs.h).
 class StagingFolder {
 public:
     static Expected<StagingFolder> create(const fs::path& output)
     {
         fs::path dir = output.parent_path();
         if (dir.empty()) dir = ".";
-        std::random_device entropy;
-        std::ostringstream name;
-        name << "." << output.stem().string() << ".tmp-" << std::hex << entropy() << entropy();
+        StaleTemporaryOptions stale;
+        stale.destination = (dir / output.stem()).string();
+        (void)remove_stale_temporary_outputs(stale);
         StagingFolder staging;
-        staging.path_ = dir / name.str();
+        staging.path_ = dir / new_temporary_output_name(output.stem().string());
         std::error_code ec;
         if (!fs::create_directory(staging.path_, ec) || ec)
             return io_error("cannot write '" + output.string() + "': cannot make the folder '" +

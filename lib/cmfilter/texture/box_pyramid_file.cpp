@@ -3,9 +3,10 @@
 
 #include "cmfilter/texture/box_pyramid.h"
 #include "cmfilter/util/stopwatch.h"
+#include "cmfilter/util/write_failure.h"
 
 #include <algorithm>
-#include <future>
+#include <thread>
 
 namespace cmfilter {
 
@@ -30,8 +31,12 @@ Expected<BoxPyramidFileTimes> write_box_pyramid_file(const BoxPyramidFileOptions
     if (!writer) return runtime_error("OpenImageIO cannot write EXR: " + OIIO::geterror());
     if (!writer->supports("mipmap") || !writer->supports("tiles"))
         return runtime_error("OpenImageIO's EXR writer cannot write tiled MIP-maps");
+    // OpenImageIO keeps a writer's errors per thread: a tile row written on
+    // the writing thread leaves its error here.
+    std::string row_error;
     const auto write_failed = [&]() -> Error {
-        return io_error("cannot write '" + options.name + "': " + writer->geterror());
+        const std::string said = row_error.empty() ? writer->geterror() : row_error;
+        return io_error("cannot write '" + options.name + "': " + write_failure_reason(options.path, said));
     };
     if (!writer->open(options.path, spec)) return write_failed();
 
@@ -41,13 +46,23 @@ Expected<BoxPyramidFileTimes> write_box_pyramid_file(const BoxPyramidFileOptions
     const int tile_rows = std::min(tile, H);
     std::vector<float> level0[2];
     for (auto& b : level0) b.resize(static_cast<std::size_t>(W) * tile_rows * C);
-    std::future<bool> pending;  // the tile row being written
+    // The tile row being written, on a thread of its own that is joined
+    // before the next is handed over (a join, unlike a future's wait, is a
+    // synchronisation ThreadSanitizer sees). Joined on every way out.
+    struct PendingRow {
+        std::thread thread;
+        bool ok = true;
+        ~PendingRow()
+        {
+            if (thread.joinable()) thread.join();
+        }
+    } pending;
     const auto wait_pending = [&]() {
-        if (!pending.valid()) return true;
+        if (!pending.thread.joinable()) return true;
         const Stopwatch t;
-        const bool ok = pending.get();
+        pending.thread.join();
         times.write_ms += t.elapsed_ms();  // the time the build waited for the writer
-        return ok;
+        return pending.ok;
     };
     for (int y0 = 0, n = 0; y0 < H; y0 += tile, n ^= 1) {
         const int y1 = std::min(H, y0 + tile);
@@ -65,8 +80,9 @@ Expected<BoxPyramidFileTimes> write_box_pyramid_file(const BoxPyramidFileOptions
         // The previous row must be out before this one is handed over (one
         // writer, rows in order); its buffer is the one the next row fills.
         if (!wait_pending()) return write_failed();
-        pending = std::async(std::launch::async, [&writer, W, y0, y1, rows]() {
-            return writer->write_tiles(0, W, y0, y1, 0, 1, OIIO::TypeDesc::FLOAT, rows);
+        pending.thread = std::thread([&writer, &row_error, &pending, W, y0, y1, rows]() {
+            pending.ok = writer->write_tiles(0, W, y0, y1, 0, 1, OIIO::TypeDesc::FLOAT, rows);
+            if (!pending.ok) row_error = writer->geterror();
         });
         progress(0.9 * y0 / H);
     }

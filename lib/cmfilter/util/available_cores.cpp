@@ -1,25 +1,18 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/util/available_cores.h"
 
+#include "cmfilter/util/cgroup_directories.h"
+#include "cmfilter/util/system_text_file.h"
+
 #include <sched.h>
 
 #include <algorithm>
-#include <fstream>
 #include <sstream>
 #include <thread>
 
 namespace cmfilter {
 
 namespace {
-
-std::string read_text(const std::string& path)
-{
-    std::ifstream in(path);
-    if (!in) return {};
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 std::optional<long long> parse_integer(const std::string& text)
 {
@@ -63,28 +56,11 @@ std::optional<int> cgroup_quota_cores(const std::string& proc_cgroup, const std:
     auto keep = [&](std::optional<int> cores) {
         if (cores && (!tightest || *cores < *tightest)) tightest = cores;
     };
-    std::istringstream lines(proc_cgroup);
-    std::string line;
-    while (std::getline(lines, line)) {
-        const auto a = line.find(':'), b = line.find(':', a == std::string::npos ? a : a + 1);
-        if (a == std::string::npos || b == std::string::npos) continue;
-        const std::string controllers = line.substr(a + 1, b - a - 1);
-        std::string path = line.substr(b + 1);
-        bool v1_cpu = false;
-        std::istringstream names(controllers);
-        for (std::string name; std::getline(names, name, ',');) v1_cpu = v1_cpu || name == "cpu";
-        const bool v2 = controllers.empty();
-        if (!v2 && !v1_cpu) continue;
-        const std::string base = v2 ? cgroup_root : cgroup_root + "/" + controllers;
-        for (;;) {
-            const std::string dir = base + (path == "/" ? std::string() : path);
-            if (v2) keep(quota_cores_from_cpu_max(read_text(dir + "/cpu.max")));
-            else
-                keep(quota_cores_from_cfs(read_text(dir + "/cpu.cfs_quota_us"), read_text(dir + "/cpu.cfs_period_us")));
-            if (path.empty() || path == "/") break;
-            path = path.substr(0, path.find_last_of('/'));
-            if (path.empty()) path = "/";
-        }
+    for (const CgroupDirectory& dir : cgroup_directories(proc_cgroup, cgroup_root, "cpu")) {
+        if (dir.v2) keep(quota_cores_from_cpu_max(read_system_text_file(dir.path + "/cpu.max")));
+        else
+            keep(quota_cores_from_cfs(read_system_text_file(dir.path + "/cpu.cfs_quota_us"),
+                                      read_system_text_file(dir.path + "/cpu.cfs_period_us")));
     }
     return tightest;
 }
@@ -103,7 +79,7 @@ int affinity_cores()
 int available_cores()
 {
     int cores = affinity_cores();
-    if (auto quota = cgroup_quota_cores(read_text("/proc/self/cgroup"), "/sys/fs/cgroup"))
+    if (auto quota = cgroup_quota_cores(read_system_text_file("/proc/self/cgroup"), "/sys/fs/cgroup"))
         cores = std::min(cores, *quota);
     return std::max(1, cores);
 }

@@ -360,7 +360,9 @@ TEST_CASE("displacement layers stay finite and in range on every angle, footprin
                                                 is_finite(a.shadowed) &&
                                                 within_scaled_range(a.shadowed, range, a.visibility, 1e-6);
                                 if (!ok && ++failures <= 5) {
-                                    CAPTURE(name);
+                                    // A copy: CAPTURE's lambda cannot capture a structured binding.
+                                    const std::string displacement = name;
+                                    CAPTURE(displacement);
                                     CAPTURE(r.name);
                                     CAPTURE(static_cast<int>(shading));
                                     CAPTURE(static_cast<int>(masking));

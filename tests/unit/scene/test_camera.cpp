@@ -109,8 +109,10 @@ TEST_CASE("ray differentials equal central differences of neighbouring rays")
         CAPTURE(sc.fov_degrees);
         const Camera camera = create_camera(sc);
         const double W = sc.width, H = sc.height;
-        for (const auto& [px, py] : {std::pair{0.5, 0.5}, std::pair{W - 0.5, H / 3}, std::pair{0.37 * W, H - 0.5},
-                                     std::pair{0.5 * W, 0.5 * H}}) {
+        for (const auto& pixel : {std::pair{0.5, 0.5}, std::pair{W - 0.5, H / 3}, std::pair{0.37 * W, H - 0.5},
+                                  std::pair{0.5 * W, 0.5 * H}}) {
+            // Named copies, not structured bindings: the checks' lambdas capture them.
+            const double px = pixel.first, py = pixel.second;
             CAPTURE(px);
             CAPTURE(py);
             const CameraRay ray = camera.ray(px, py);

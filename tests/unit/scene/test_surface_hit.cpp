@@ -335,7 +335,9 @@ TEST_CASE("spherical texture coordinates at known points")
         CHECK(hit->v == doctest::Approx(k.v).epsilon(1e-14));
     }
     // The poles: theta = 0 on top, pi at the bottom; u is arbitrary there but in range.
-    for (const auto& [axis, v] : {std::pair{Vec3{0, 1, 0}, 0.0}, std::pair{Vec3{0, -1, 0}, 2.0}}) {
+    for (const auto& axis_v : {std::pair{Vec3{0, 1, 0}, 0.0}, std::pair{Vec3{0, -1, 0}, 2.0}}) {
+        const Vec3 axis = axis_v.first;
+        const double v = axis_v.second;
         CAPTURE(axis);
         const std::optional<SurfaceHit> pole = intersect(sphere, make_ray(c + 10 * axis, -axis));
         REQUIRE(pole);

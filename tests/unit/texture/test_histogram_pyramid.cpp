@@ -51,7 +51,8 @@ TEST_CASE("histogram pyramid levels hold the fraction of each footprint at each 
     // Twelve values: more than ten bins, so that bin order must survive
     // OpenEXR's sorting of channels by name.
     const std::vector<float> values = {-0.5f, 0.25f, 0.3f, 7.0f, 1.0f, 2.0f, 3.0f, 4.0f, 5.0f, 6.0f, 8.0f, 9.0f};
-    for (auto [W, H] : std::vector<std::pair<int, int>>{{16, 16}, {5, 3}, {23, 9}, {1, 6}}) {
+    for (const auto& wh : std::vector<std::pair<int, int>>{{16, 16}, {5, 3}, {23, 9}, {1, 6}}) {
+        const int W = wh.first, H = wh.second;
         CAPTURE(W);
         CAPTURE(H);
         const auto f = few_values(W, H, values);

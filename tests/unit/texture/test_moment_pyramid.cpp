@@ -105,7 +105,8 @@ TEST_CASE("moment pyramid levels are exact box means of level 0, any size")
     // Float32 storage of a value computed in double rounds it by at most half
     // an ulp, 2^-24 relative; the tolerance allows 2^-23 |ref| plus 1e-12 for
     // the double sums on both sides.
-    for (auto [W, H] : std::vector<std::pair<int, int>>{{16, 16}, {32, 8}, {37, 23}, {5, 3}, {64, 1}, {1, 9}}) {
+    for (const auto& wh : std::vector<std::pair<int, int>>{{16, 16}, {32, 8}, {37, 23}, {5, 3}, {64, 1}, {1, 9}}) {
+        const int W = wh.first, H = wh.second;
         CAPTURE(W);
         CAPTURE(H);
         const auto f = random_driver(W, H, -2.0, 3.0, 7 + W * 100 + H);
@@ -249,7 +250,8 @@ TEST_CASE("offset driver 1000..1000.01: sigma survives where naive float moments
 
 TEST_CASE("TextureSystem lookups at integer LOD and texel centres reproduce the level")
 {
-    for (auto [W, H] : std::vector<std::pair<int, int>>{{32, 32}, {37, 23}, {64, 16}}) {
+    for (const auto& wh : std::vector<std::pair<int, int>>{{32, 32}, {37, 23}, {64, 16}}) {
+        const int W = wh.first, H = wh.second;
         CAPTURE(W);
         CAPTURE(H);
         const auto f = random_driver(W, H, 0.0, 1.0, 3 + W);
