@@ -2,12 +2,10 @@
 # SPDX-License-Identifier: Apache-2.0
 # Sets cmfilter up on a Debian machine and runs one of its jobs:
 #   bash bootstrap.sh example   install what is missing, build, bake the bundled example into out/example/
-#   bash bootstrap.sh test      install what is missing, build, run the test suite: the release
-#                               build (build/) is built and runs the checks only a plain build
-#                               can (style, packaging); the whole suite runs built with
-#                               AddressSanitizer and UndefinedBehaviorSanitizer, with the fuzz
-#                               harnesses (build-checked/); the threaded tests run under
-#                               ThreadSanitizer (build-thread/)
+#   bash bootstrap.sh test      install what is missing, build, run the test suite: the whole
+#                               suite built with AddressSanitizer and UndefinedBehaviorSanitizer,
+#                               the library shared, with the fuzz harnesses (build-checked/);
+#                               the threaded tests under ThreadSanitizer (build-thread/)
 #   bash bootstrap.sh test-release  the whole suite in the release build
 #   bash bootstrap.sh test-checked | test-thread   one of the sanitized stages alone
 set -euo pipefail
@@ -51,9 +49,8 @@ export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 # tracks; races are still detected.
 export TSAN_OPTIONS=${TSAN_OPTIONS:-halt_on_error=1:detect_deadlocks=0:suppressions=$PWD/tests/sanitizers/tsan.supp}
 
-# Precompiled headers make the builds faster; the release tree of `test`
-# compiles the library and the command without them, so each of those
-# files is checked to include what it uses.
+# Precompiled headers make every build here faster (a plain cmake build
+# goes without them).
 release() {
   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DCMFILTER_PRECOMPILE_HEADERS=ON
   cmake --build build -j"$jobs"
@@ -69,20 +66,13 @@ case "$mode" in
       release
       (cd build && ctest --output-on-failure -j"$jobs")
     fi
-    if [ "$mode" = test ]; then
-      # The checks only a plain build runs: style, and packaging on the
-      # shared library (its own SONAME; a static tree would build the
-      # library a second time, shared, for that test). The library and the
-      # command are all the package holds, so only they are built here.
-      echo "bootstrap: the release build (shared), and the checks only it runs (style, packaging)"
-      cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DBUILD_SHARED_LIBS=ON
-      cmake --build build -j"$jobs" --target cmfilter_cli
-      (cd build && ctest --output-on-failure -j"$jobs" -L "style|package")
-    fi
     if [ "$mode" = test ] || [ "$mode" = test-checked ]; then
       echo "bootstrap: the whole suite under AddressSanitizer + UndefinedBehaviorSanitizer, and the fuzzers"
+      # Shared, as a renderer's plugin links it: the package tests check the
+      # installed shared library (its SONAME, find_package, pkg-config,
+      # dlopen) without building the library a second time.
       cmake -S . -B build-checked "${checked_flags[@]}" -DCMFILTER_PRECOMPILE_HEADERS=ON \
-            "-DCMFILTER_SANITIZE=address;undefined" -DCMFILTER_FUZZ=ON
+            "-DCMFILTER_SANITIZE=address;undefined" -DCMFILTER_FUZZ=ON -DBUILD_SHARED_LIBS=ON
       cmake --build build-checked -j"$jobs"
       (cd build-checked && ctest --output-on-failure -j"$jobs")
     fi
