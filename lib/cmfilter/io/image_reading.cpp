@@ -6,6 +6,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -39,14 +40,29 @@ Expected<std::unique_ptr<OIIO::ImageInput>> open_image_input(const std::string& 
     return Expected<std::unique_ptr<OIIO::ImageInput>>(std::move(in));
 }
 
+namespace {
+
+// Native bytes a strip of rows aims at: small enough to stay in cache,
+// large enough that a read call is not per row.
+constexpr double kStripBytes = double(4 << 20);
+
+}  // namespace
+
+int native_strip_rows(const OIIO::ImageSpec& spec)
+{
+    if (spec.tile_width > 0) return std::max(1, spec.tile_height);
+    const double row = double(std::max(spec.width, 1)) * double(std::max<std::size_t>(spec.pixel_bytes(true), 1));
+    return static_cast<int>(std::clamp(std::floor(kStripBytes / row), 1.0, double(std::max(spec.height, 1))));
+}
+
 Status check_image_allocation(const OIIO::ImageSpec& spec, const std::string& path, int channels, int copies)
 {
-    // The floats, and the buffer of native rows the image library converts
-    // them from: it allocates 256 rows (its "read_chunk"), however few the
-    // image has, or a row of tiles.
-    const double rows = std::max(256, spec.tile_height);
+    // The floats, and one strip of native rows (a row of tiles) twice: the
+    // strip read_float_pixels converts from, and the whole-pixel strip an
+    // image reader without channel subsets copies a subset out of.
+    const double strip = double(spec.width) * double(native_strip_rows(spec)) * double(spec.pixel_bytes(true));
     const double bytes = double(spec.width) * double(spec.height) * double(channels) * sizeof(float) * copies +
-                         double(spec.width) * rows * double(spec.pixel_bytes(true));
+                         2 * strip;
     return check_allocation(bytes, "'" + path + "' (" + std::to_string(spec.width) + " x " +
                                        std::to_string(spec.height) + " pixels, " + std::to_string(channels) +
                                        (channels == 1 ? " channel)" : " channels)"));
@@ -58,15 +74,42 @@ bool read_float_pixels(OIIO::ImageInput& in, int subimage, int miplevel, int chb
     // Tiled images are read a row of tiles at a time by the library itself
     // (its read_scanlines would divide by a strip height of 0 on them).
     if (spec.tile_width > 0) return in.read_image(subimage, miplevel, chbegin, chend, OIIO::TypeDesc::FLOAT, out);
-    const std::size_t row = static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(chend - chbegin);
-    constexpr std::size_t kStripValues = std::size_t(4) << 20;  // 16 MB of floats
-    const int rows = static_cast<int>(std::max<std::size_t>(
-        1, std::min<std::size_t>(kStripValues / std::max<std::size_t>(row, 1), std::size_t(spec.height))));
+    // Scanline images: native strips of our own, converted here. Asked for
+    // float, OpenImageIO 2.4's read_scanlines converts through a buffer of
+    // about 64 MB (more for a large "tiff:RowsPerStrip"), whatever the
+    // image's size, allocated on every call.
+    const int nch = chend - chbegin;
+    const std::size_t width = static_cast<std::size_t>(spec.width);
+    const std::size_t out_row = width * static_cast<std::size_t>(nch);
+    const int rows = native_strip_rows(spec);
+    const bool uniform = spec.channelformats.empty();
+    std::vector<char> strip;
     for (int y = 0; y < spec.height; y += rows) {
         const int end = std::min(spec.height, y + rows);
-        if (!in.read_scanlines(subimage, miplevel, spec.y + y, spec.y + end, 0, chbegin, chend, OIIO::TypeDesc::FLOAT,
-                               out + static_cast<std::size_t>(y) * row))
-            return false;
+        const int h = end - y;
+        float* dst = out + static_cast<std::size_t>(y) * out_row;
+        if (uniform && spec.format == OIIO::TypeDesc::FLOAT) {
+            if (!in.read_scanlines(subimage, miplevel, spec.y + y, spec.y + end, 0, chbegin, chend,
+                                   OIIO::TypeDesc::UNKNOWN, dst))
+                return false;
+            continue;
+        }
+        // Mixed channel types are read and converted a channel at a time.
+        const int groups = uniform ? 1 : nch;
+        for (int g = 0; g < groups; ++g) {
+            const int c0 = uniform ? chbegin : chbegin + g, c1 = uniform ? chend : c0 + 1;
+            const OIIO::TypeDesc type = uniform ? spec.format : spec.channelformat(c0);
+            const std::size_t pixel = spec.pixel_bytes(c0, c1, true);
+            strip.resize(width * static_cast<std::size_t>(h) * pixel);
+            if (!in.read_scanlines(subimage, miplevel, spec.y + y, spec.y + end, 0, c0, c1, OIIO::TypeDesc::UNKNOWN,
+                                   strip.data()))
+                return false;
+            const OIIO::stride_t fx = sizeof(float) * static_cast<OIIO::stride_t>(nch);
+            if (!OIIO::convert_image(c1 - c0, spec.width, h, 1, strip.data(), type, OIIO::AutoStride, OIIO::AutoStride,
+                                     OIIO::AutoStride, dst + (c0 - chbegin), OIIO::TypeDesc::FLOAT, fx, fx * spec.width,
+                                     OIIO::AutoStride))
+                return false;
+        }
     }
     return true;
 }

@@ -33,16 +33,22 @@ Expected<ImageData> read_image(const std::string& path);
 
 // Reads channels [chbegin, chend) of subimage `subimage`, MIP level
 // `miplevel` of `in` as float into `out` (width x height x channels, top row
-// first) in strips of rows of at most a few megabytes each (a tiled image:
-// a row of tiles at a time), so the image library never holds more than one
-// strip of its own beside `out`. False
-// (with in's error set) when a read fails.
+// first), in strips of native_strip_rows rows that it converts itself (a
+// tiled image: a row of tiles at a time, by OpenImageIO), so that no more
+// than a strip is held beside `out`. False (with in's error set) when a read
+// fails.
 bool read_float_pixels(OIIO::ImageInput& in, int subimage, int miplevel, int chbegin, int chend, float* out);
 
+// Rows of `spec` that read_float_pixels reads at a time: about 4 MB of
+// native pixels, at least one row and at most the image; a tiled image's
+// tile height.
+int native_strip_rows(const OIIO::ImageSpec& spec);
+
 // BadInput naming `path` and its size when `channels` float values for each
-// of `spec`'s width x height pixels (times `copies`), with the native rows
-// OpenImageIO converts them from (up to 256 rows), exceed the memory budget
-// (util/memory_budget.h); what a reader calls before it allocates them.
+// of `spec`'s width x height pixels (times `copies`), with two strips of
+// native rows (native_strip_rows) that reading converts them from, exceed
+// the memory budget (util/memory_budget.h); what a reader calls before it
+// allocates them.
 Status check_image_allocation(const OIIO::ImageSpec& spec, const std::string& path, int channels, int copies = 1);
 
 // Opens `path` for reading after the same checks: Io when it is missing, a

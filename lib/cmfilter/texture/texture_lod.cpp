@@ -2,11 +2,13 @@
 #include "cmfilter/texture/texture_lod.h"
 
 #include "cmfilter/texture/moment_pyramid.h"
+#include "cmfilter/util/memory_budget.h"
 
 #include <OpenImageIO/texture.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace cmfilter {
 
@@ -17,7 +19,34 @@ Status check_tiled_mipmap(OIIO::ImageInput& in, int levels, const std::string& p
     if (found != levels || in.spec(0, 0).tile_width <= 0)
         return bad_input("'" + path + "' is not a tiled MIP-map with the " + std::to_string(levels) +
                          " levels its metadata names (found " + std::to_string(found) + ")");
+    for (int level = 0; level < levels; ++level)
+        if (auto st = check_texture_level(in.spec(0, level), level, path); !st) return st;
     return ok();
+}
+
+Status check_texture_level(const OIIO::ImageSpec& spec, int level, const std::string& path)
+{
+    const std::string where = "level " + std::to_string(level) + " of '" + path + "'";
+    if (spec.width < 1 || spec.height < 1 || spec.depth != 1 || spec.nchannels < 1)
+        return bad_input(where + " is " + std::to_string(spec.width) + " x " + std::to_string(spec.height) + " x " +
+                         std::to_string(spec.depth) + " pixels of " + std::to_string(spec.nchannels) +
+                         " channels; expected at least 1 x 1 x 1 and one channel");
+    if (spec.tile_width < 1 || spec.tile_height < 1 || spec.tile_depth != 1)
+        return bad_input(where + " has tiles of " + std::to_string(spec.tile_width) + " x " +
+                         std::to_string(spec.tile_height) + " x " + std::to_string(spec.tile_depth) +
+                         " pixels; expected at least 1 x 1 x 1");
+    // The image cache counts a level's tiles in an int and keeps a bit for
+    // each; it reads one whole tile of floats at a time.
+    const double tiles = std::ceil(double(spec.width) / spec.tile_width) *
+                         std::ceil(double(spec.height) / spec.tile_height);
+    if (tiles > double(std::numeric_limits<int>::max()))
+        return bad_input(where + " has " + std::to_string(static_cast<long long>(tiles)) + " tiles of " +
+                         std::to_string(spec.tile_width) + " x " + std::to_string(spec.tile_height) +
+                         " pixels; at most " + std::to_string(std::numeric_limits<int>::max()) + " are supported");
+    const double tile_bytes = double(spec.tile_width) * spec.tile_height * spec.nchannels * sizeof(float);
+    return check_allocation(tile_bytes + tiles / 8, where + " (tiles of " + std::to_string(spec.tile_width) + " x " +
+                                                        std::to_string(spec.tile_height) + " pixels, " +
+                                                        std::to_string(spec.nchannels) + " channels)");
 }
 
 std::shared_ptr<OIIO::TextureSystem> make_private_texture_system()

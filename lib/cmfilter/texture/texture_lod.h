@@ -21,7 +21,15 @@ namespace cmfilter {
 
 // BadInput naming `path` unless the opened file is a tiled MIP-map with
 // exactly `levels` levels (as its metadata names).
+// Every level is then checked by check_texture_level.
 Status check_tiled_mipmap(OIIO::ImageInput& in, int levels, const std::string& path);
+
+// BadInput naming `path` and `level` unless the level is a 2D image of at
+// least one pixel and one channel in tiles of at least one pixel, with no
+// more tiles than OpenImageIO's image cache can count (it counts them in an
+// int), and one tile of floats and the cache's bit a tile fit in the memory
+// budget (util/memory_budget.h).
+Status check_texture_level(const OIIO::ImageSpec& spec, int level, const std::string& path);
 
 // A TextureSystem of the caller's own, so that its cache and options are
 // nobody else's; destroyed with its last owner.

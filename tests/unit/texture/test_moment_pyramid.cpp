@@ -7,6 +7,7 @@
 // TextureSystem lookups through MomentTexture at texel centres.
 #include "cmfilter/texture/moment_pyramid.h"
 #include "cmfilter/texture/moment_texture.h"
+#include "cmfilter/texture/texture_lod.h"
 
 #include "box_reference.h"
 
@@ -303,6 +304,30 @@ TEST_CASE("MomentTexture refuses files that are not moment pyramids")
     auto missing = MomentTexture::open((test_dir() / "no-such.exr").string());
     REQUIRE_FALSE(missing);
     CHECK(missing.error().kind == ErrorKind::Io);
+}
+
+TEST_CASE("a pyramid level with more tiles than the image cache can count is refused")
+{
+    // OpenImageIO's image cache counts a level's tiles in an int: a header
+    // claiming 167772159 x 385875968 pixels in 64 x 64 tiles overflows it
+    // (and made the cache abort, found by fuzz.moment_pyramid).
+    OIIO::ImageSpec huge(167772159, 385875968, 2, OIIO::TypeDesc::FLOAT);
+    huge.tile_width = huge.tile_height = 64;
+    const std::int64_t tiles = ((huge.width + 63LL) / 64) * ((huge.height + 63LL) / 64);
+    REQUIRE(tiles > std::int64_t(2147483647));
+    const Status refused = check_texture_level(huge, 0, "huge.exr");
+    REQUIRE_FALSE(refused);
+    CHECK(refused.error().kind == ErrorKind::BadInput);
+    CHECK(refused.error().message.find("level 0 of 'huge.exr' has " + std::to_string(tiles) + " tiles") !=
+          std::string::npos);
+    OIIO::ImageSpec untiled(64, 64, 2, OIIO::TypeDesc::FLOAT);
+    CHECK_FALSE(check_texture_level(untiled, 0, "untiled.exr"));
+    OIIO::ImageSpec empty(0, 64, 2, OIIO::TypeDesc::FLOAT);
+    empty.tile_width = empty.tile_height = 64;
+    CHECK_FALSE(check_texture_level(empty, 0, "empty.exr"));
+    OIIO::ImageSpec fine(4096, 1, 2, OIIO::TypeDesc::FLOAT);
+    fine.tile_width = fine.tile_height = 64;
+    CHECK(check_texture_level(fine, 3, "fine.exr"));
 }
 
 TEST_CASE("--nan zero replaces and counts non-finite texels")
