@@ -45,6 +45,9 @@ struct Command {
     CLI::App* app = nullptr;
     std::function<Status()> run;
     FieldFlags flags;  // the fields its errors may name
+    // The exit code of a run that succeeded: 0, unless a command's own gate
+    // says otherwise (compare --warn / --fail: docs/exit-codes.md).
+    std::function<int()> success_code;
 };
 
 Command setup_apply(CLI::App& parent);

@@ -3,13 +3,17 @@
 // the same size, both in scene-linear, with an optional per-pixel heat map.
 #include "command.h"
 
+#include "cmfilter/color/error_summary.h"
 #include "cmfilter/ops/image_comparison.h"
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <sstream>
 
 namespace cmfilter::cli {
 
@@ -20,6 +24,38 @@ struct CompareArgs {
     std::string ocio_config;
     bool json = false;
     bool quiet = false;
+    // Build gates, as idiff's -warn / -fail: thresholds on one CIEDE2000
+    // statistic; the run's exit code says which was exceeded.
+    std::optional<double> warn, fail;
+    std::string gate_statistic = "max";
+    int exit_code = 0;
+};
+
+// Exit codes of the gates (docs/exit-codes.md), after the error codes 1-4.
+constexpr int kExitWarn = 5;
+constexpr int kExitFail = 6;
+
+Expected<double> gate_value(const ErrorSummary& de, const std::string& statistic)
+{
+    if (statistic == "mean") return de.mean;
+    if (statistic == "p95") return de.p95;
+    if (statistic == "max") return de.max;
+    return bad_input("--gate '" + statistic + "' is unknown (expected mean, p95 or max)");
+}
+
+Status check_threshold(const char* flag, const std::optional<double>& v)
+{
+    if (v && !(std::isfinite(*v) && *v >= 0)) {
+        std::ostringstream msg;
+        msg << flag << " " << *v << " is invalid (expected a CIEDE2000 difference >= 0)";
+        return bad_input(msg.str());
+    }
+    return ok();
+}
+
+struct GateResult {
+    std::string result = "pass";  // pass, warn, fail
+    double value = 0;
 };
 
 nlohmann::json image_json(const ComparedImage& image)
@@ -57,12 +93,22 @@ void print_table(const ImageComparison& c)
                   << 2 * c.heatmap_max / 3 << " yellow, >= " << c.heatmap_max << " white\n";
 }
 
-Status run(const CompareArgs& args)
+Status run(CompareArgs& args)
 {
+    if (auto st = check_threshold("--warn", args.warn); !st) return st;
+    if (auto st = check_threshold("--fail", args.fail); !st) return st;
+    if (auto st = gate_value(ErrorSummary{}, args.gate_statistic); !st) return st.error();
     auto config = load_color_config(args.ocio_config);
     if (!config) return config.error();
     auto c = compare_images(args.options, *config);
     if (!c) return c.error();
+
+    GateResult gate;
+    gate.value = *gate_value(c->de2000, args.gate_statistic);
+    // Strictly over: a threshold is the largest difference that passes.
+    if (args.fail && gate.value > *args.fail) gate.result = "fail";
+    else if (args.warn && gate.value > *args.warn) gate.result = "warn";
+    args.exit_code = gate.result == "fail" ? kExitFail : gate.result == "warn" ? kExitWarn : 0;
 
     if (args.json) {
         nlohmann::json j;
@@ -78,9 +124,28 @@ Status run(const CompareArgs& args)
         j["ciede2000"] = {{"mean", c->de2000.mean}, {"p95", c->de2000.p95}, {"max", c->de2000.max}};
         j["heatmap"] = nullptr;
         if (!c->heatmap_path.empty()) j["heatmap"] = {{"path", c->heatmap_path}, {"max", c->heatmap_max}};
+        j["gate"] = nullptr;
+        if (args.warn || args.fail) {
+            j["gate"] = {{"statistic", args.gate_statistic},
+                         {"value", gate.value},
+                         {"warn", args.warn ? nlohmann::json(*args.warn) : nlohmann::json(nullptr)},
+                         {"fail", args.fail ? nlohmann::json(*args.fail) : nlohmann::json(nullptr)},
+                         {"result", gate.result},
+                         {"exit_code", args.exit_code}};
+        }
         std::cout << j.dump(2) << "\n";
     } else if (!args.quiet) {
         print_table(*c);
+    }
+    // A gate that is exceeded says so on stderr, even with --quiet and --json.
+    if (gate.result != "pass") {
+        const double threshold = gate.result == "fail" ? *args.fail : *args.warn;
+        std::cerr << "cmfilter compare: " << (gate.result == "fail" ? "FAIL" : "WARN") << ": CIEDE2000 "
+                  << args.gate_statistic << " " << gate.value << " > --" << gate.result << " " << threshold << " ("
+                  << c->a.path << " vs " << c->b.path << ")\n";
+    } else if ((args.warn || args.fail) && !args.quiet && !args.json) {
+        std::cout << "gate passed: CIEDE2000 " << args.gate_statistic << " " << gate.value
+                  << " <= " << (args.warn ? "--warn " : "--fail ") << (args.warn ? *args.warn : *args.fail) << "\n";
     }
     return ok();
 }
@@ -108,8 +173,16 @@ Command setup_compare(CLI::App& parent)
         ->needs(heatmap);
     app->add_option("--threads", args->options.threads, "Threads (0: all cores)")->capture_default_str();
     app->add_flag("--json", args->json, "Print the results as JSON on stdout");
+    app->add_option("--warn", args->warn, "Exit 5 when the CIEDE2000 statistic of --gate exceeds DE (as idiff -warn)");
+    app->add_option("--fail", args->fail, "Exit 6 when the CIEDE2000 statistic of --gate exceeds DE (as idiff -fail)");
+    app->add_option("--gate", args->gate_statistic,
+                    "The statistic --warn and --fail test: mean, p95 or max (as idiff, the largest pixel)")
+        ->capture_default_str();
     app->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
-    return {app, [args] { return run(*args); }, {{"ImageComparisonOptions::heatmap_max", "--heatmap-max"}}};
+    return {app,
+            [args] { return run(*args); },
+            {{"ImageComparisonOptions::heatmap_max", "--heatmap-max"}},
+            [args] { return args->exit_code; }};
 }
 
 }  // namespace cmfilter::cli

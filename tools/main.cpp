@@ -25,7 +25,8 @@ int main(int argc, char** argv)
                  "cmfilter"};
     app.set_version_flag("--version", std::string("cmfilter ") + version());
     app.require_subcommand(1);
-    app.footer("Exit codes: 0 ok, 1 usage, 2 I/O, 3 bad input, 4 runtime error.\n"
+    app.footer("Exit codes: 0 ok, 1 usage, 2 I/O, 3 bad input, 4 runtime error;\n"
+               "compare's gates: 5 over --warn, 6 over --fail.\n"
                "Run 'cmfilter <command> --help' for a command's options.");
 
     std::vector<cli::Command> commands = {
@@ -72,7 +73,7 @@ int main(int argc, char** argv)
             std::cerr << prefix() << ": error: " << cli::name_flags(status.error().message, command.flags) << "\n";
             return static_cast<int>(status.error().kind);
         }
-        return 0;
+        return command.success_code ? command.success_code() : 0;
     }
     return 0;
 }

@@ -58,3 +58,7 @@ set_tests_properties(cli.compare.heatmap PROPERTIES FIXTURES_SETUP compare_heatm
 add_test(NAME cli.compare.heatmap-info COMMAND ${OIIOTOOL} --info ${OUT}/heat.png)
 set_tests_properties(cli.compare.heatmap-info PROPERTIES FIXTURES_REQUIRED compare_heatmap LABELS cli
     PASS_REGULAR_EXPRESSION "16 x +8, 3 channel, uint8 png")
+
+# Build gates: --warn, --fail and --gate, with their own exit codes.
+add_test(NAME cli.compare.gates COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/check_compare_gates.sh ${CMF} ${CA} ${CB})
+set_tests_properties(cli.compare.gates PROPERTIES FIXTURES_REQUIRED cli_fixtures LABELS cli ENVIRONMENT "OCIO=")

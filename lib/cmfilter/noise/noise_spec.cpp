@@ -6,6 +6,7 @@
 #include "cmfilter/noise/lattice_box_correlation.h"
 #include "cmfilter/noise/value_noise.h"
 
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -49,12 +50,23 @@ Expected<std::uint64_t> parse_seed(const std::string& text)
     return static_cast<std::uint64_t>(v);
 }
 
-Expected<NoiseBasis> parse_basis(const std::string& text)
+// Kinds and bases case-insensitively ("fBm", RenderMan's spelling).
+std::string lower_case(std::string text)
 {
-    if (text == "gradient") return NoiseBasis::Gradient;
+    for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return text;
+}
+
+Expected<NoiseBasis> parse_basis(const std::string& given)
+{
+    const std::string text = lower_case(given);
+    // "perlin" and "snoise": OSL's noise("perlin") and noise("snoise") are
+    // signed gradient noise, and most tools call gradient noise Perlin
+    // noise (docs/noise.md, names other tools use).
+    if (text == "gradient" || text == "perlin" || text == "snoise") return NoiseBasis::Gradient;
     if (text == "value") return NoiseBasis::Value;
     if (text == "gabor") return NoiseBasis::Gabor;
-    return bad_input("noise basis '" + text + "' is unknown (expected gradient, value or gabor)");
+    return bad_input("noise basis '" + given + "' is unknown (expected gradient (or perlin, snoise), value or gabor)");
 }
 
 // Kind, then each key=value pair in order.
@@ -112,8 +124,9 @@ Expected<NoiseSpec> parse_noise_spec(const std::string& text)
     auto split = split_spec(text);
     if (!split) return split.error();
     NoiseSpec spec;
-    if (split->kind == "fbm" || split->kind == "turbulence") {
-        spec.fractal = split->kind == "fbm" ? FractalSum::Fbm : FractalSum::Turbulence;
+    const std::string kind = lower_case(split->kind);
+    if (kind == "fbm" || kind == "turbulence") {
+        spec.fractal = kind == "fbm" ? FractalSum::Fbm : FractalSum::Turbulence;
         spec.fractal_options.sum = *spec.fractal;
         for (const auto& [key, value] : split->pairs)
             if (key == "base") {
@@ -125,7 +138,7 @@ Expected<NoiseSpec> parse_noise_spec(const std::string& text)
         auto basis = parse_basis(split->kind);
         if (!basis)
             return bad_input("noise kind '" + split->kind +
-                             "' is unknown (expected gradient, value, gabor, fbm or turbulence)");
+                             "' is unknown (expected gradient (or perlin, snoise), value, gabor, fbm or turbulence)");
         spec.basis = *basis;
     }
     for (const auto& [key, value] : split->pairs) {

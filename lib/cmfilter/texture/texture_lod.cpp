@@ -19,6 +19,10 @@ Status check_tiled_mipmap(OIIO::ImageInput& in, int levels, const std::string& p
     if (found != levels || in.spec(0, 0).tile_width <= 0)
         return bad_input("'" + path + "' is not a tiled MIP-map with the " + std::to_string(levels) +
                          " levels its metadata names (found " + std::to_string(found) + ")");
+    // The image cache opens every level of every subimage on the first
+    // lookup: a pyramid is one subimage.
+    if (in.seek_subimage(1, 0))
+        return bad_input("'" + path + "' has more than one subimage; a pyramid is a single tiled MIP-map");
     for (int level = 0; level < levels; ++level)
         if (auto st = check_texture_level(in.spec(0, level), level, path); !st) return st;
     return ok();

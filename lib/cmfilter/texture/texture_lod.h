@@ -20,8 +20,9 @@ class TextureSystem;
 namespace cmfilter {
 
 // BadInput naming `path` unless the opened file is a tiled MIP-map with
-// exactly `levels` levels (as its metadata names).
-// Every level is then checked by check_texture_level.
+// exactly `levels` levels (as its metadata names) and a single subimage (OpenImageIO's image cache opens every level of
+// every subimage on the first lookup); each level is then checked by
+// check_texture_level.
 Status check_tiled_mipmap(OIIO::ImageInput& in, int levels, const std::string& path);
 
 // BadInput naming `path` and `level` unless the level is a 2D image of at
