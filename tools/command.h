@@ -10,12 +10,14 @@
 #pragma once
 
 #include "cmfilter/color/color_config.h"
+#include "cmfilter/io/exr_output_options.h"
 #include "cmfilter/io/rgb_image_file.h"
 #include "cmfilter/math/vec3.h"
 #include "cmfilter/synthesis/sample_analysis.h"
 #include "cmfilter/util/error.h"
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include <cstdint>
 #include <functional>
@@ -47,7 +49,7 @@ struct Command {
     FieldFlags flags;  // the fields its errors may name
     // The exit code of a run that succeeded: 0, unless a command's own gate
     // says otherwise (compare --warn / --fail: docs/exit-codes.md).
-    std::function<int()> success_code;
+    std::function<int()> success_code{};
 };
 
 Command setup_apply(CLI::App& parent);
@@ -72,6 +74,10 @@ Expected<std::pair<double, double>> parse_range(const std::string& option, const
 
 // Splits "WxH" into two integers in 1..65536; names the option and the text on failure.
 Expected<std::pair<int, int>> parse_size(const std::string& option, const std::string& text);
+
+// parse_size within a scene's limits (kMaxImageSide a side, kMaxImagePixels
+// in all): render --size and bench --size, which replace a scene's resolution.
+Expected<std::pair<int, int>> parse_image_size(const std::string& option, const std::string& text);
 
 // "x,y,z": a direction, normalised; BadInput naming the option unless three
 // finite numbers, nonzero, with z >= 0 (at or above the horizon).
@@ -115,6 +121,20 @@ Expected<SampleAnalysis> analyse_sample_from_args(const std::string& path, const
 Status write_output_image(const std::string& path, int width, int height, int channels, std::vector<float> values,
                           const std::string& linear_space, const ImageAttributes& attributes,
                           const ColorConfig& config);
+
+// -d half|float, --tile W H, --compression NAME: the storage of a table or
+// pyramid (io/exr_output_options.h), spelled as maketx spells them.
+struct ExrOutputArgs {
+    std::string pixel_type = "float";
+    std::vector<int> tile;  // empty, or W H
+    std::string compression = "zip";
+};
+// `default_tiles` says what no --tile means ("scanlines", "64 64").
+void add_exr_output_options(CLI::App& app, ExrOutputArgs& args, const std::string& default_tiles);
+Expected<ExrOutputOptions> exr_output_options_from_args(const ExrOutputArgs& args);
+FieldFlags exr_output_flags();
+// {"pixel_type", "compression", "tile": [W, H] or null, "lossy": words or ""}.
+nlohmann::json storage_json(const ExrOutputOptions& options);
 
 // --probes (render, bench): BadInput unless 1 <= probes <= 64.
 Status check_probes(int probes);

@@ -151,7 +151,7 @@ Command setup_apply(CLI::App& parent)
                     "Driver image for reference (default: the moments' cmfilter:source, hash-checked)");
     app->add_option("--histograms", args->options.histograms_path,
                     "Histogram pyramid of the driver (required by --method exact)");
-    app->add_option("--ocio-config", args->ocio_config,
+    app->add_option("--ocio-config,--colorconfig", args->ocio_config,
                     "OpenColorIO config (default: $OCIO if set, else the built-in config)");
     app->add_option("--threads", args->options.threads, "Threads (0: all cores)")->capture_default_str();
     app->add_flag("--json", args->json, "Print a machine-readable summary on stdout");

@@ -44,6 +44,7 @@ struct BakeColormapArgs {
     int error_samples = 20000;
     std::uint64_t seed = 1;
     int threads = 0;
+    ExrOutputArgs storage;
     bool json = false;
     bool quiet = false;
 };
@@ -58,6 +59,8 @@ Status run(const BakeColormapArgs& args)
     if (!wrap) return wrap.error();
     auto spacing = parse_sigma_spacing(args.sigma_spacing);
     if (!spacing) return spacing.error();
+    auto storage = exr_output_options_from_args(args.storage);
+    if (!storage) return storage.error();
     if (args.error_samples < 0)
         return bad_input("--error-samples " + std::to_string(args.error_samples) +
                          " is negative (expected >= 0; 0 skips the measurement)");
@@ -146,7 +149,7 @@ Status run(const BakeColormapArgs& args)
         info.lookup_error = measure_lookup_error(*table, loaded->map, measure);
         info.lookup_error_samples = args.error_samples;
     }
-    if (auto st = write_gaussian_color_table(args.output, *table, info); !st) return st;
+    if (auto st = write_gaussian_color_table(args.output, *table, info, *storage); !st) return st;
 
     const TableAxes& ax = table->axes();
     const std::size_t table_bytes = TableSize{ax.values, ax.sigmas, ax.spacing}.bytes();
@@ -155,6 +158,7 @@ Status run(const BakeColormapArgs& args)
     if (args.json) {
         nlohmann::json j;
         j["output"] = args.output;
+        j["storage"] = storage_json(*storage);
         j["kind"] = kGaussianColorTableKind;
         j["values"] = ax.values;
         j["sigmas"] = ax.sigmas;
@@ -223,6 +227,7 @@ Status run(const BakeColormapArgs& args)
             std::cout << std::setprecision(3) << "  lookup   CIEDE2000 mean " << info.lookup_error->mean << ", p95 "
                       << info.lookup_error->p95 << ", max " << info.lookup_error->max << " over "
                       << info.lookup_error_samples << " random (v, sigma)\n";
+        std::cout << "  storage  " << exr_output_text(*storage, "scanlines") << "\n";
         std::cout << std::fixed << std::setprecision(1) << "  time     " << (search ? "search and bake " : "bake ")
                   << bake_ms << " ms\n";
     }
@@ -245,7 +250,7 @@ Command setup_bake_colormap(CLI::App& parent)
     app->add_option("--colorspace", args->colorspace,
                     "Colour space of the map image (default: the file's metadata, else sRGB for "
                     "integer and linear for float files)");
-    app->add_option("--ocio-config", args->ocio_config,
+    app->add_option("--ocio-config,--colorconfig", args->ocio_config,
                     "OpenColorIO config (default: $OCIO if set, else the built-in config)");
     app->add_option("--domain", args->domain, "Driver domain the map spans, MIN:MAX (use --domain=-1:1 for negatives)")
         ->capture_default_str();
@@ -280,9 +285,12 @@ Command setup_bake_colormap(CLI::App& parent)
         ->capture_default_str();
     app->add_option("--seed", args->seed, "Seed for the error measurement")->capture_default_str();
     app->add_option("--threads", args->threads, "Threads (0: all cores)")->capture_default_str();
+    add_exr_output_options(*app, args->storage, "scanlines");
     app->add_flag("--json", args->json, "Print a machine-readable summary on stdout");
     app->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
-    return {app, [args] { return run(*args); }, color_map_flags()};
+    FieldFlags flags = color_map_flags();
+    for (auto& f : exr_output_flags()) flags.push_back(f);
+    return {app, [args] { return run(*args); }, flags};
 }
 
 }  // namespace cmfilter::cli

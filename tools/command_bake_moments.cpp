@@ -33,6 +33,7 @@ struct BakeMomentsArgs {
     std::string wrap = "clamp";
     std::string nan = "error";
     int threads = 0;
+    ExrOutputArgs storage;
     bool json = false;
     bool quiet = false;
 };
@@ -46,6 +47,8 @@ Status run(const BakeMomentsArgs& args)
     if (!wrap) return wrap.error();
     auto nan = parse_non_finite_policy(args.nan);
     if (!nan) return nan.error();
+    auto storage = exr_output_options_from_args(args.storage);
+    if (!storage) return storage.error();
 
     MomentBakeOptions options;
     options.driver_path = args.driver_path;
@@ -54,6 +57,7 @@ Status run(const BakeMomentsArgs& args)
     options.wrap = *wrap;
     options.nonfinite = *nan;
     options.threads = args.threads;
+    options.storage = *storage;
     const bool progress = !args.quiet && !args.json && isatty(STDERR_FILENO);
     if (progress) options.progress = terminal_progress("bake-moments");
     const Stopwatch t0;
@@ -80,6 +84,7 @@ Status run(const BakeMomentsArgs& args)
     if (args.json) {
         nlohmann::json j;
         j["output"] = args.output;
+        j["storage"] = storage_json(*storage);
         j["kind"] = kMomentPyramidKind;
         j["size"] = {info.width, info.height};
         j["levels"] = info.levels;
@@ -100,7 +105,10 @@ Status run(const BakeMomentsArgs& args)
                   << "  driver     " << info.source << " (channel " << info.channel << ", " << info.source_pixel_type
                   << "), range [" << info.driver_min << ", " << info.driver_max << "]\n"
                   << "  reference  c = " << info.reference << " (channels: mean of f - c, mean of (f - c)^2)\n"
-                  << "  wrap       " << to_string(info.wrap) << "\n";
+                  << "  wrap       " << to_string(info.wrap) << "\n"
+                  << "  storage    " << exr_output_text(*storage, "64 x 64 tiles") << "\n";
+        if (storage->pixel_type == ExrPixelType::Half)
+            std::cout << "             half moments lose sigma at fine LODs: see docs/storage.md\n";
         if (histograms)
             std::cout << "  histograms " << args.histograms << ": " << histograms->values.size()
                       << " distinct values (exact method)\n";
@@ -132,9 +140,10 @@ Command setup_bake_moments(CLI::App& parent)
     app->add_option("--nan", args->nan, "NaN/Inf texels: error (refuse the driver) or zero (replace by 0 and count)")
         ->capture_default_str();
     app->add_option("--threads", args->threads, "Threads (0: all cores)")->capture_default_str();
+    add_exr_output_options(*app, args->storage, "64 64");
     app->add_flag("--json", args->json, "Print a machine-readable summary on stdout");
     app->add_flag("-q,--quiet", args->quiet, "Print nothing on success (and no progress)");
-    return {app, [args] { return run(*args); }, {}};
+    return {app, [args] { return run(*args); }, exr_output_flags()};
 }
 
 }  // namespace cmfilter::cli

@@ -33,6 +33,7 @@ struct BakeNoiseArgs {
     std::uint64_t sample_seed = 1;
     int max_footprints = 1 << 16;
     int threads = 0;
+    ExrOutputArgs storage;
     bool json = false;
     bool quiet = false;
 };
@@ -53,6 +54,8 @@ Status run(const BakeNoiseArgs& args)
                          " is invalid (expected a finite value in (0, 4])");
     if (args.max_footprints < 1024)
         return bad_input("--max-footprints " + std::to_string(args.max_footprints) + " is invalid (expected >= 1024)");
+    auto storage = exr_output_options_from_args(args.storage);
+    if (!storage) return storage.error();
     auto spec = parse_noise_spec(args.noise);
     if (!spec) return spec.error();
     auto noise = make_noise(*spec);
@@ -69,7 +72,8 @@ Status run(const BakeNoiseArgs& args)
     auto bake = bake_noise_sigma(*noise, options);
     if (!bake) return bake.error();
     const std::string spec_text = to_string(*spec);
-    if (auto st = write_noise_sigma_table(args.output, *bake, spec_text, noise->base_period()); !st) return st;
+    if (auto st = write_noise_sigma_table(args.output, *bake, spec_text, noise->base_period(), *storage); !st)
+        return st;
     if (!args.csv.empty())
         if (auto st = write_noise_sigma_csv(args.csv, *bake, noise->base_period()); !st) {
             std::remove(args.output.c_str());  // all or nothing
@@ -81,6 +85,7 @@ Status run(const BakeNoiseArgs& args)
     if (args.json) {
         nlohmann::json j;
         j["output"] = args.output;
+        j["storage"] = storage_json(*storage);
         if (!args.csv.empty()) j["csv"] = args.csv;
         j["kind"] = kNoiseSigmaTableKind;
         j["noise"] = spec_text;
@@ -109,6 +114,7 @@ Status run(const BakeNoiseArgs& args)
                   << ", excess kurtosis " << g.excess_kurtosis << " (" << g.samples << " samples)\n"
                   << "  CI      worst 95% half-width " << 100 * worst << "% of sigma\n";
         if (!args.csv.empty()) std::cout << "  csv     " << args.csv << "\n";
+        std::cout << "  storage " << exr_output_text(*storage, "scanlines") << "\n";
         std::cout << std::setprecision(3) << "  time    " << total_ms << " ms\n";
     }
     return ok();
@@ -129,9 +135,10 @@ Command setup_bake_noise(CLI::App& parent)
     app->add_option("--sample-seed", args->sample_seed, "Seed of the Monte-Carlo sampling")->capture_default_str();
     app->add_option("--max-footprints", args->max_footprints, "Cap on footprints per LOD")->capture_default_str();
     app->add_option("--threads", args->threads, "Threads (0: all cores)")->capture_default_str();
+    add_exr_output_options(*app, args->storage, "scanlines");
     app->add_flag("--json", args->json, "Print a machine-readable summary on stdout");
     app->add_flag("-q,--quiet", args->quiet, "Print nothing on success (and no progress)");
-    return {app, [args] { return run(*args); }, {}};
+    return {app, [args] { return run(*args); }, exr_output_flags()};
 }
 
 }  // namespace cmfilter::cli

@@ -65,7 +65,7 @@ Status run(const BenchArgs& args)
     if (auto st = check_reference_options(options); !st) return st;
     std::optional<std::pair<int, int>> size;
     if (!args.resolution.empty()) {
-        auto parsed = parse_size("--resolution", args.resolution);
+        auto parsed = parse_image_size("--size", args.resolution);
         if (!parsed) return parsed.error();
         size = *parsed;
     }
@@ -123,7 +123,7 @@ Command setup_bench(CLI::App& parent)
     app->add_option("scenes", args->scenes, "Scene files (JSON, docs/scene-format.md)")->required();
     app->add_option("--csv", args->csv, "CSV to write: one row per scene and configuration")->required();
     app->add_option("--charts", args->charts, "Folder for one chart per scene (SCENE.png; needs gnuplot)");
-    app->add_option("--resolution", args->resolution, "Render every scene at WxH instead of its own resolution");
+    app->add_option("--size,--resolution", args->resolution, "Render every scene at WxH instead of its own resolution");
     app->add_option("--reference-spp", args->reference_samples, "Rays per pixel of each reference round (>= 1024)")
         ->capture_default_str();
     app->add_option("--reference-repeat", args->reference_repeat,
@@ -144,7 +144,7 @@ Command setup_bench(CLI::App& parent)
     app->add_flag("--no-edge-coverage", args->no_edge_coverage,
                   "naive, gaussian: the centre ray's surface for the whole pixel, also on silhouettes and horizons");
     app->add_option("--seed", args->seed, "Seed of the sub-pixel samples")->capture_default_str();
-    app->add_option("--ocio-config", args->ocio_config,
+    app->add_option("--ocio-config,--colorconfig", args->ocio_config,
                     "OpenColorIO config (default: $OCIO if set, else the built-in config)");
     app->add_option("--threads", args->threads, "Threads (0: all cores)")->capture_default_str();
     app->add_flag("-q,--quiet", args->quiet, "Print nothing on success");

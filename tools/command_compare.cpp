@@ -163,7 +163,7 @@ Command setup_compare(CLI::App& parent)
                     "Colour space of A (default: the file's metadata, else sRGB for integer and "
                     "linear for float files)");
     app->add_option("--colorspace-b", args->options.colorspace_b, "Colour space of B (default: as for A)");
-    app->add_option("--ocio-config", args->ocio_config,
+    app->add_option("--ocio-config,--colorconfig", args->ocio_config,
                     "OpenColorIO config (default: $OCIO if set, else the built-in config)");
     auto* heatmap = app->add_option("--heatmap", args->options.heatmap_path,
                                     "Write the per-pixel CIEDE2000 as an 8-bit sRGB PNG (black, red, yellow, white)");

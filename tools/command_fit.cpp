@@ -465,7 +465,8 @@ Command setup_fit(CLI::App& parent)
     app->add_option("--singular-threshold", args->singular_threshold,
                     "Singular values of the light matrix below this fraction of the largest are taken as zero")
         ->capture_default_str();
-    app->add_option("--ocio-config", args->ocio_config, "OpenColorIO config (default: $OCIO, else built in)");
+    app->add_option("--ocio-config,--colorconfig", args->ocio_config,
+                    "OpenColorIO config (default: $OCIO, else built in)");
     app->add_option("--threads", args->threads, "Threads (0: all cores)")->capture_default_str();
     app->add_flag("--json", args->json, "Print a machine-readable summary on stdout");
     app->add_flag("-q,--quiet", args->quiet, "Print nothing on success");

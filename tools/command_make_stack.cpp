@@ -174,7 +174,7 @@ Command setup_make_stack(CLI::App& parent)
     app->add_option("--format", args->format, "Images: exr (scene-linear float) or png (8-bit sRGB)")
         ->capture_default_str();
     app->add_flag("--albedo", args->albedo, "Also write the mean colour per pixel (STEM.albedo.exr)");
-    app->add_option("--ocio-config", args->ocio_config,
+    app->add_option("--ocio-config,--colorconfig", args->ocio_config,
                     "OpenColorIO config (default: $OCIO if set, else the built-in config)");
     app->add_option("--threads", args->threads, "Threads (0: all cores)")->capture_default_str();
     app->add_flag("--json", args->json, "Print a machine-readable summary on stdout");

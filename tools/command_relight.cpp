@@ -177,7 +177,8 @@ Command setup_relight(CLI::App& parent)
                     "Lafortune fit)")
         ->capture_default_str();
     app->add_option("--colorspace", args->colorspace, "Colour space of the reference stack's integer images");
-    app->add_option("--ocio-config", args->ocio_config, "OpenColorIO config (default: $OCIO, else built in)");
+    app->add_option("--ocio-config,--colorconfig", args->ocio_config,
+                    "OpenColorIO config (default: $OCIO, else built in)");
     app->add_option("--threads", args->threads, "Threads (0: all cores)")->capture_default_str();
     app->add_flag("--json", args->json, "Print a machine-readable summary on stdout");
     app->add_flag("-q,--quiet", args->quiet, "Print nothing on success");

@@ -6,6 +6,7 @@
 
 #include "cmfilter/render/render.h"
 #include "cmfilter/io/rgb_image_file.h"
+#include "cmfilter/io/recorded_path.h"
 #include "cmfilter/scene/scene_loading.h"
 #include "cmfilter/scene/tolerance_tables.h"
 #include "cmfilter/tables/table_size_search.h"
@@ -21,6 +22,8 @@
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <tuple>
+#include <utility>
 
 namespace cmfilter::cli {
 
@@ -38,6 +41,7 @@ struct RenderArgs {
     std::uint64_t seed = 0;
     std::string footprint = "rms";
     std::string aov;
+    std::string size;  // WxH replacing the scene's camera resolution
     std::optional<double> tolerance;
     std::optional<double> shortcut;
     std::string ocio_config;
@@ -123,8 +127,17 @@ Status run(const RenderArgs& args)
             if (auto st = check_rgb_image_output(path, true); !st) return st;
         if (auto st = check_rgb_image_output(shaded_path, true); !st) return st;
     }
+    std::optional<std::pair<int, int>> size;
+    if (!args.size.empty()) {
+        auto parsed = parse_image_size("--size", args.size);
+        if (!parsed) return parsed.error();
+        size = *parsed;
+    }
     auto scene = load_scene(args.scene);
     if (!scene) return scene.error();
+    // A preview at another size: the same camera and field of view (vertical),
+    // so a different aspect ratio shows more or less to the sides.
+    if (size) std::tie(scene->camera.width, scene->camera.height) = *size;
     auto config = load_color_config(args.ocio_config);
     if (!config) return config.error();
 
@@ -157,7 +170,7 @@ Status run(const RenderArgs& args)
     ImageAttributes a;
     a.text = {{"cmfilter:kind", "render"},
               {"cmfilter:version", version()},
-              {"cmfilter:scene", scene->path},
+              {"cmfilter:scene", path_for_record(scene->path, args.output)},
               {"cmfilter:method", to_string(image->method)},
               {"cmfilter:footprint", to_string(options.footprint)}};
     a.numbers = {{"cmfilter:samples", static_cast<double>(image->samples)},
@@ -232,6 +245,9 @@ Command setup_render(CLI::App& parent)
            "--method", args->method,
            "naive, gaussian, gaussian-exact (microsurfaces: D_h's exact moments), exact (microsurfaces, or texture drivers with at most 256 values), supersample or reference")
         ->capture_default_str();
+    app->add_option("--size,--resolution", args->size,
+                    "Render at WxH instead of the scene's camera resolution (the same camera and vertical field "
+                    "of view)");
     app->add_option("--spp", args->samples, "Rays per pixel for supersample (reference: at least 1024)")
         ->capture_default_str();
     app->add_option("--seed", args->seed, "Seed of the sub-pixel samples")->capture_default_str();
@@ -263,7 +279,7 @@ Command setup_render(CLI::App& parent)
     app->add_option("--aov", args->aov,
                     "Also write PREFIX.mean.exr, PREFIX.sigma.exr and PREFIX.lod.exr (and, for supersample and "
                     "reference on a microsurface, PREFIX.shaded.exr: the fully shaded image)");
-    app->add_option("--ocio-config", args->ocio_config,
+    app->add_option("--ocio-config,--colorconfig", args->ocio_config,
                     "OpenColorIO config (default: $OCIO if set, else the built-in config)");
     app->add_option("--threads", args->threads, "Threads (0: all cores)")->capture_default_str();
     app->add_flag("--json", args->json, "Print a machine-readable summary on stdout");

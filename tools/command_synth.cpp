@@ -6,6 +6,7 @@
 // with --analysis, kept there for the next synthesis.
 #include "command.h"
 
+#include "cmfilter/io/recorded_path.h"
 #include "cmfilter/io/rgb_image_file.h"
 #include "cmfilter/synthesis/analysis_file.h"
 #include "cmfilter/synthesis/coordinate_lookup.h"
@@ -146,7 +147,8 @@ Status run(const SynthArgs& args, const CLI::App& app)
         auto out = render_through_map(*map, image->image, args.threads);
         if (!out) return out.error();
         ImageAttributes attributes;
-        attributes.text = {{"cmfilter:kind", "synthesised-image"}, {"cmfilter:coordinate_map", args.output}};
+        attributes.text = {{"cmfilter:kind", "synthesised-image"},
+                           {"cmfilter:coordinate_map", path_for_record(args.output, args.preview)}};
         if (auto st = write_output_image(args.preview, out->width, out->height, out->channels, std::move(out->pixels),
                                          image->colorspace, attributes, *config);
             !st)
@@ -216,7 +218,8 @@ Command setup_synth(CLI::App& parent)
     app->add_flag("--quality", args->quality,
                   "Measure coherence, coverage and seams, and the same for naive tiling of the sample");
     add_sample_analysis_options(*app, args->analysis);
-    app->add_option("--ocio-config", args->ocio_config, "OpenColorIO config (default: $OCIO, else built in)");
+    app->add_option("--ocio-config,--colorconfig", args->ocio_config,
+                    "OpenColorIO config (default: $OCIO, else built in)");
     app->add_option("--threads", args->threads, "Threads (0: all cores; the result is the same for any)")
         ->capture_default_str();
     app->add_flag("--json", args->json, "Print a machine-readable summary on stdout");

@@ -75,7 +75,8 @@ Command setup_synth_analyse(CLI::App& parent)
     app->add_option("SAMPLE", args->sample, "An image, an image stack (.lp) or a BTF manifest (.json)")->required();
     app->add_option("-o,--output", args->output, "The analysis to write (.exr)")->required();
     add_sample_analysis_options(*app, args->analysis);
-    app->add_option("--ocio-config", args->ocio_config, "OpenColorIO config (default: $OCIO, else built in)");
+    app->add_option("--ocio-config,--colorconfig", args->ocio_config,
+                    "OpenColorIO config (default: $OCIO, else built in)");
     app->add_option("--threads", args->threads, "Threads (0: all cores)")->capture_default_str();
     app->add_flag("--json", args->json, "Print a machine-readable summary on stdout");
     app->add_flag("-q,--quiet", args->quiet, "Print nothing on success");

@@ -5,6 +5,7 @@
 // Memory is the sample image (or fit) plus the map, not the full surface.
 #include "command.h"
 
+#include "cmfilter/io/recorded_path.h"
 #include "cmfilter/synthesis/coordinate_lookup.h"
 #include "cmfilter/synthesis/coordinate_map_file.h"
 #include "cmfilter/synthesis/synthesis_sample.h"
@@ -105,8 +106,8 @@ Status run(const SynthApplyArgs& args, const CLI::App& app)
 
     ImageAttributes attributes;
     attributes.text = {{"cmfilter:kind", "synthesised-image"},
-                       {"cmfilter:coordinate_map", args.map},
-                       {"cmfilter:source", args.source},
+                       {"cmfilter:coordinate_map", path_for_record(args.map, args.output)},
+                       {"cmfilter:source", path_for_record(args.source, args.output)},
                        {"cmfilter:lod_method", to_string(*method)},
                        {"cmfilter:description", image->description}};
     attributes.numbers = {{"cmfilter:lod", static_cast<double>(args.lod)}};
@@ -172,7 +173,8 @@ Command setup_synth_apply(CLI::App& parent)
     app->add_option("--colorspace", args->colorspace, "Colour space of the sample's integer images");
     app->add_flag("--no-hash-check", args->no_hash_check,
                   "Render through the map even when the sample's files differ from those it was made from");
-    app->add_option("--ocio-config", args->ocio_config, "OpenColorIO config (default: $OCIO, else built in)");
+    app->add_option("--ocio-config,--colorconfig", args->ocio_config,
+                    "OpenColorIO config (default: $OCIO, else built in)");
     app->add_option("--threads", args->threads, "Threads (0: all cores)")->capture_default_str();
     app->add_flag("--json", args->json, "Print a machine-readable summary on stdout");
     app->add_flag("-q,--quiet", args->quiet, "Print nothing on success");

@@ -8,6 +8,7 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <cstdlib>
 #include <iostream>
 #include <new>
 #include <vector>
@@ -20,6 +21,10 @@ int main(int argc, char** argv)
     const int cores = available_cores();
     OIIO::attribute("threads", cores);
     OIIO::attribute("exr_threads", cores);
+    // OpenImageIO built without NDEBUG (as Debian's is) prints debug lines on
+    // stdout, where they would break --json; on only when asked for by
+    // OPENIMAGEIO_DEBUG, as OpenImageIO's own variable.
+    if (std::getenv("OPENIMAGEIO_DEBUG") == nullptr) OIIO::attribute("debug", 0);
     CLI::App app{"cmfilter: filters colour-mapped textures and surfaces correctly at every scale\n"
                  "(Heitz et al. 2013, \"Filtering Color Mapped Textures and Surfaces\").",
                  "cmfilter"};

@@ -26,11 +26,11 @@ cmfilter_apply_case(NAME bad.domain-no-overlap EXIT 3
                     STDERR "the driver range \\[5, 5\\.9375\\] of '.*apply-far-moments\\.exr' does not overlap the domain \\[0, 1\\] of table '.*apply-table\\.exr'"
                     ABSENT ${A} COMMAND ${CMF} apply --moments ${OUT}/apply-far-moments.exr --table ${AT} --lod 0 -o ${A})
 cmfilter_apply_case(NAME bad.driver-missing EXIT 2
-                    STDERR "cannot read driver 'apply-gone-driver\\.exr' recorded in '.*apply-gone-moments\\.exr' \\(cmfilter:source\\): no such file; pass --driver PATH"
+                    STDERR "cannot read driver '[^']*apply-gone-driver\\.exr' recorded in '.*apply-gone-moments\\.exr' \\(cmfilter:source\\): no such file; pass --driver PATH"
                     ABSENT ${A} COMMAND ${CMF} apply --moments ${OUT}/apply-gone-moments.exr --table ${AT} --lod 0
                                         --method reference -o ${A})
 cmfilter_apply_case(NAME bad.map-missing EXIT 2
-                    STDERR "cannot read colour map 'apply-gone-map\\.exr' recorded in '.*apply-gone-table\\.exr' \\(cmfilter:source\\): no such file; pass --map PATH"
+                    STDERR "cannot read colour map '[^']*apply-gone-map\\.exr' recorded in '.*apply-gone-table\\.exr' \\(cmfilter:source\\): no such file; pass --map PATH"
                     ABSENT ${A} COMMAND ${CMF} apply --moments ${AM} --table ${OUT}/apply-gone-table.exr --lod 0
                                         --method naive -o ${A})
 cmfilter_apply_case(NAME bad.map-override-missing EXIT 2 STDERR "cannot read '.*no-such\\.exr': no such file"

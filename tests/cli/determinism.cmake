@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: Apache-2.0
 # Every command that writes gives bit-identical outputs for any thread count
-# and across runs (timings aside): each runs with 1 thread, 2, and 2 again
+# and across runs, byte for byte: each runs with 1 thread, 2, and 2 again
 # (check_deterministic.sh). Labelled `threads`: the ThreadSanitizer build runs
 # these, so every threaded path (table and moment bakes with their writer
 # thread, apply, render, fits, synthesis) runs there too.
@@ -49,3 +49,11 @@ cmfilter_determinism_case(synth synth_fixtures ${CMF} synth ${OUT}/synth-fixture
                           --size 33x21 -k 2 --levels 2 --textons 32 --neighbourhood 1 --seed 7 --threads ${T} -q)
 cmfilter_determinism_case(synth-apply synth_map ${CMF} synth-apply ${OUT}/synth-map.exr
                           --source ${OUT}/synth-fixtures/sample.png --lod 1 -o @OUT@/surface.exr --threads ${T})
+
+# Reproducible outputs: the same inputs baked in two folders give the same
+# bytes, the recorded sources resolve after a move, SOURCE_DATE_EPOCH.
+add_test(NAME cli.reproducible
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/check_reproducible.sh ${CMF} ${LUTS}/terrain.png
+                 ${FIX}/driver-37x23.png ${OUT}/reproducible)
+set_tests_properties(cli.reproducible PROPERTIES FIXTURES_REQUIRED "cli_dirs;cli_fixtures" LABELS cli
+                     ENVIRONMENT "OCIO=")

@@ -20,6 +20,13 @@ inline std::string temp_dir(const std::string& name)
     return dir.string();
 }
 
+// Whether two paths name the same file, lexically (as cmfilter records the
+// paths of its inputs relative to its outputs and resolves them back).
+inline bool same_file_path(const std::string& a, const std::string& b)
+{
+    return std::filesystem::absolute(a).lexically_normal() == std::filesystem::absolute(b).lexically_normal();
+}
+
 inline void write_image(const std::string& path, int w, int h, int ch, OIIO::TypeDesc type, const void* data,
                         const char* colorspace = nullptr)
 {

@@ -46,6 +46,7 @@ Expected<ColorMapProvenance> image_map_provenance(const std::string& path, const
     prov.colorspace = space.colorspace;
     prov.colorspace_rule = space.rule;
     prov.linear_space = config.scene_linear_name();
+    prov.linear_interop_id = config.interop_id(prov.linear_space);
     prov.ocio_config = config.source();
     return prov;
 }

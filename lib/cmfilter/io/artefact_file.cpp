@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/io/artefact_file.h"
 
+#include "cmfilter/io/output_date.h"
+
 namespace cmfilter {
 
 Status check_artefact_kind(const OIIO::ImageSpec& spec, const std::string& path, const std::string& kind,
@@ -17,10 +19,37 @@ Status check_artefact_kind(const OIIO::ImageSpec& spec, const std::string& path,
     return ok();
 }
 
-Status write_float_artefact(AtomicOutput& out, const OIIO::ImageSpec& spec, const float* pixels)
+Expected<ArtefactImage> read_artefact_image(const std::string& path, const std::string& kind, const std::string& what,
+                                            int version,
+                                            const std::function<Status(const OIIO::ImageSpec&)>& check_header)
 {
+    ArtefactImage out;
+    {
+        auto in = open_image_input(path);
+        if (!in) return in.error();
+        out.spec = (*in)->spec();
+    }
+    if (auto st = check_artefact_kind(out.spec, path, kind, what, version); !st) return st.error();
+    if (check_header)
+        if (auto st = check_header(out.spec); !st) return st.error();
+    auto image = read_image(path);
+    if (!image) return image.error();
+    out.image = std::move(*image);
+    return out;
+}
+
+Status write_float_artefact(AtomicOutput& out, OIIO::ImageSpec spec, const float* pixels,
+                            const ExrOutputOptions& storage)
+{
+    if (auto st = check_exr_output_options(storage, "ExrOutputOptions"); !st) return st;
+    if (auto st = check_half_range(pixels, spec.image_pixels() * static_cast<std::size_t>(spec.nchannels), storage,
+                                   out.destination());
+        !st)
+        return st;
+    apply_exr_output_options(spec, storage);
     auto writer = OIIO::ImageOutput::create(out.temp_path());
     if (!writer) return runtime_error("OpenImageIO cannot write EXR: " + OIIO::geterror());
+    if (auto st = set_output_date(spec, *writer); !st) return st;
     if (!writer->open(out.temp_path(), spec) || !writer->write_image(OIIO::TypeDesc::FLOAT, pixels) || !writer->close())
         return out.write_error(writer->geterror());
     return out.commit();
@@ -39,6 +68,8 @@ Status write_float_artefact_parts(AtomicOutput& out, std::vector<OIIO::ImageSpec
     if (!writer) return runtime_error("OpenImageIO cannot write EXR: " + OIIO::geterror());
     if (specs.size() > 1 && !writer->supports("multiimage"))
         return runtime_error("OpenImageIO's writer for '" + path + "' cannot write several subimages");
+    for (OIIO::ImageSpec& spec : specs)
+        if (auto st = set_output_date(spec, *writer); !st) return st;
     if (!writer->open(out.temp_path(), static_cast<int>(specs.size()), specs.data()))
         return out.write_error(writer->geterror());
     for (std::size_t s = 0; s < specs.size(); ++s) {

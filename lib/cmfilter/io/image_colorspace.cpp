@@ -8,12 +8,20 @@ namespace cmfilter {
 
 namespace {
 
-// The colour space as named (before resolution) and the rule that chose it.
+// OpenImageIO's word for "linear" with no primaries: what its OpenEXR and
+// HDR readers report for every file.
+bool is_generic_linear(const std::string& name) { return name == "Linear" || name == "linear"; }
+
+// The colour space as named (before resolution) and the rule that chose it,
+// in this order: the caller's name; a PNG gAMA chunk; what the file declares
+// (colorInteropID, cmfilter:linear_space); the config's file rules, when a
+// rule other than Default matches; what OpenImageIO reports (oiio:ColorSpace,
+// its "Linear" read as the scene_linear role); the config's defaults.
 Expected<ImageColorSpace> choose(const ImageData& img, const std::string& path, const std::string& requested,
-                                 const std::string& option)
+                                 const std::string& option, const ColorConfig& config)
 {
     if (!requested.empty()) return ImageColorSpace{requested, option};
-    if (img.colorspace_attr == "GammaCorrected") {
+    if (img.oiio_colorspace == "GammaCorrected") {
         // OpenImageIO reports a PNG gAMA chunk (and similar) as a pure power law.
         const float g = img.gamma_attr;
         if (std::fabs(g - 2.2f) < 0.01f) return ImageColorSpace{"Gamma 2.2", "file metadata (gamma 2.2)"};
@@ -25,8 +33,17 @@ Expected<ImageColorSpace> choose(const ImageData& img, const std::string& path, 
         return bad_input(msg.str());
     }
     if (!img.colorspace_attr.empty()) return ImageColorSpace{img.colorspace_attr, "file metadata"};
+    if (std::string ruled = config.file_rule_space(path); !ruled.empty())
+        return ImageColorSpace{ruled, "the config's file rules"};
+    if (is_generic_linear(img.oiio_colorspace))
+        return ImageColorSpace{"scene_linear", "file metadata (linear: the scene_linear role)"};
+    if (!img.oiio_colorspace.empty()) return ImageColorSpace{img.oiio_colorspace, "file metadata"};
     if (img.is_float) return ImageColorSpace{"scene_linear", "default for float files"};
-    return ImageColorSpace{"sRGB", "default for integer files"};
+    auto srgb = config.srgb_texture_name();
+    if (srgb) return ImageColorSpace{*srgb, "default for integer files"};
+    if (std::string fallback = config.role_space("default"); !fallback.empty())
+        return ImageColorSpace{fallback, "default for integer files (the default role)"};
+    return srgb.error();
 }
 
 }  // namespace
@@ -35,7 +52,7 @@ Expected<ImageColorSpace> decide_image_colorspace(const ImageData& img, const st
                                                   const std::string& requested, const std::string& option,
                                                   const ColorConfig& config)
 {
-    auto choice = choose(img, path, requested, option);
+    auto choice = choose(img, path, requested, option, config);
     if (!choice) return choice.error();
     auto canonical = config.resolve(choice->colorspace);
     if (!canonical) {

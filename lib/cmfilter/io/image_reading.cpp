@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/io/image_reading.h"
 
+#include "cmfilter/color/interop_chromaticities.h"
+
 #include "cmfilter/util/memory_budget.h"
 
 #include <OpenImageIO/imageio.h>
@@ -129,10 +131,19 @@ Expected<ImageData> read_image(const std::string& path)
     img.pixel_type = spec.format.c_str();
     img.is_float = spec.format.basetype == OIIO::TypeDesc::HALF || spec.format.basetype == OIIO::TypeDesc::FLOAT ||
                    spec.format.basetype == OIIO::TypeDesc::DOUBLE;
-    // colorInteropID (the OpenEXR / OpenImageIO 3 convention) wins over
-    // oiio:ColorSpace, which OpenImageIO 2.4 reports as "Linear" for any EXR.
+    // colorInteropID (the OpenEXR / OpenImageIO 3 convention) and cmfilter's
+    // own record win over oiio:ColorSpace, which OpenImageIO 2.4 reports as
+    // "Linear" for any EXR (its writer drops it) and "sRGB" for most PNGs.
     img.colorspace_attr = spec.get_string_attribute("colorInteropID");
-    if (img.colorspace_attr.empty()) img.colorspace_attr = spec.get_string_attribute("oiio:ColorSpace");
+    if (img.colorspace_attr.empty()) img.colorspace_attr = spec.get_string_attribute("cmfilter:linear_space");
+    if (img.colorspace_attr.empty())  // OpenEXR's chromaticities of a space the built-in config knows
+        if (const OIIO::ParamValue* c =
+                spec.find_attribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8))) {
+            Chromaticities xy;
+            std::copy_n(static_cast<const float*>(c->data()), xy.size(), xy.begin());
+            img.colorspace_attr = interop_id_of_chromaticities(xy);
+        }
+    img.oiio_colorspace = spec.get_string_attribute("oiio:ColorSpace");
     img.gamma_attr = spec.get_float_attribute("oiio:Gamma", 0.0f);
     if (auto fits = check_image_allocation(spec, path, img.channels); !fits) return fits.error();
     img.pixels.resize(static_cast<std::size_t>(img.width) * img.height * img.channels);

@@ -19,11 +19,16 @@ struct ImageData {
     int height = 0;
     int channels = 0;
     std::vector<std::string> channel_names;
-    std::vector<float> pixels;    // width * height * channels, row-major, top row first
-    std::string format;           // OpenImageIO format name ("png", "openexr", ...)
-    std::string pixel_type;       // stored type ("uint8", "half", "float", ...)
-    bool is_float = false;        // stored as half/float/double
-    std::string colorspace_attr;  // "colorInteropID", else "oiio:ColorSpace", or empty
+    std::vector<float> pixels;  // width * height * channels, row-major, top row first
+    std::string format;         // OpenImageIO format name ("png", "openexr", ...)
+    std::string pixel_type;     // stored type ("uint8", "half", "float", ...)
+    bool is_float = false;      // stored as half/float/double
+    // The colour space the file declares: "colorInteropID", else the
+    // "cmfilter:linear_space" cmfilter's own files record, else the interop
+    // ID of OpenEXR's "chromaticities" when they are a known space's
+    // (color/interop_chromaticities.h), else empty.
+    std::string colorspace_attr;
+    std::string oiio_colorspace;  // "oiio:ColorSpace": what OpenImageIO reports, often only its guess for the format
     float gamma_attr = 0;         // "oiio:Gamma" when declared, else 0
 };
 

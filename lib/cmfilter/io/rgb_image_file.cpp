@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/io/rgb_image_file.h"
 
+#include "cmfilter/io/linear_space_attributes.h"
+#include "cmfilter/io/output_date.h"
 #include "cmfilter/util/atomic_output.h"
 #include "cmfilter/io/metadata.h"
 
@@ -38,10 +40,10 @@ Status write_rgb_image(const std::string& path, int width, int height, int chann
     std::vector<unsigned char> codes;
     if (exr) {
         spec.attribute("compression", "zip");
-        if (!linear_space.empty()) spec.attribute("oiio:ColorSpace", linear_space);
+        set_linear_space_attributes(spec, linear_space, config.interop_id(linear_space));
     } else {
         // Scene-linear -> sRGB encoding through OpenColorIO, then 8-bit codes.
-        auto srgb = config.resolve("sRGB");
+        auto srgb = config.srgb_texture_name();
         if (!srgb) return srgb.error();
         std::vector<float> encoded = pixels;
         if (auto st = config.from_scene_linear(encoded, *srgb); !st) return st;
@@ -60,6 +62,7 @@ Status write_rgb_image(const std::string& path, int width, int height, int chann
     if (!out) return out.error();
     auto writer = OIIO::ImageOutput::create(out->temp_path());
     if (!writer) return runtime_error("OpenImageIO cannot write '" + path + "': " + OIIO::geterror());
+    if (auto st = set_output_date(spec, *writer); !st) return st;
     if (!writer->open(out->temp_path(), spec) ||
         !(exr ? writer->write_image(OIIO::TypeDesc::FLOAT, pixels.data())
               : writer->write_image(OIIO::TypeDesc::UINT8, codes.data())) ||

@@ -39,7 +39,7 @@ std::string join_counts(const NoiseSigmaBake& bake, Get get)
 }  // namespace
 
 Status write_noise_sigma_table(const std::string& path, const NoiseSigmaBake& bake, const std::string& noise_spec,
-                               double base_period)
+                               double base_period, const ExrOutputOptions& storage)
 {
     if (bake.rows.empty()) return bad_input("noise sigma table '" + path + "' has no LODs");
     auto out = AtomicOutput::begin(path);
@@ -78,7 +78,7 @@ Status write_noise_sigma_table(const std::string& path, const NoiseSigmaBake& ba
     dbl("cmfilter:global_skewness", bake.global.skewness);
     dbl("cmfilter:global_excess_kurtosis", bake.global.excess_kurtosis);
 
-    return write_float_artefact(*out, spec, pixels.data());
+    return write_float_artefact(*out, spec, pixels.data(), storage);
 }
 
 Status write_noise_sigma_csv(const std::string& path, const NoiseSigmaBake& bake, double base_period)
@@ -102,13 +102,19 @@ Status write_noise_sigma_csv(const std::string& path, const NoiseSigmaBake& bake
 
 Expected<LoadedNoiseSigmaTable> read_noise_sigma_table(const std::string& path, FootprintShape shape)
 {
-    auto image = read_image(path);
-    if (!image) return image.error();
-    auto in = OIIO::ImageInput::open(path);
-    if (!in) return io_error("cannot read '" + path + "': " + OIIO::geterror());
-    const OIIO::ImageSpec& spec = in->spec();
-    if (auto st = check_artefact_kind(spec, path, kNoiseSigmaTableKind, "noise sigma table", kFormatVersion); !st)
-        return st.error();
+    // One row of a pixel per LOD, before any pixel is read.
+    const auto shape_fits = [&](const OIIO::ImageSpec& header) -> Status {
+        const int lods = header.get_int_attribute("cmfilter:lods", 0);
+        if (header.nchannels != kChannels || header.height != 1 || lods != header.width)
+            return bad_input("'" + path + "' has inconsistent cmfilter metadata (" + std::to_string(lods) +
+                             " LODs for " + std::to_string(header.width) + " x " + std::to_string(header.height) +
+                             " pixels of " + std::to_string(header.nchannels) + " channels)");
+        return ok();
+    };
+    auto artefact = read_artefact_image(path, kNoiseSigmaTableKind, "noise sigma table", kFormatVersion, shape_fits);
+    if (!artefact) return artefact.error();
+    const OIIO::ImageSpec& spec = artefact->spec;
+    const ImageData* image = &artefact->image;
     const int lods = spec.get_int_attribute("cmfilter:lods", 0);
     if (image->channels != kChannels || image->height != 1 || lods != image->width)
         return bad_input("'" + path + "' has inconsistent cmfilter metadata (" + std::to_string(lods) + " LODs for " +

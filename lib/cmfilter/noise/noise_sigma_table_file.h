@@ -8,6 +8,7 @@
 // Also a CSV export of the same rows.
 #pragma once
 
+#include "cmfilter/io/exr_output_options.h"
 #include "cmfilter/util/error.h"
 #include "cmfilter/noise/noise_sigma_bake.h"
 #include "cmfilter/noise/noise_sigma_table.h"
@@ -20,8 +21,9 @@ inline constexpr const char* kNoiseSigmaTableKind = "noise-sigma-table";
 
 // `noise_spec` is the spec's text form (noise_spec.h); `base_period` the
 // noise's p_0, recorded so a reader can turn widths into LODs.
+// `storage`: pixel type, tiles and compression (default float, scanlines, zip).
 Status write_noise_sigma_table(const std::string& path, const NoiseSigmaBake& bake, const std::string& noise_spec,
-                               double base_period);
+                               double base_period, const ExrOutputOptions& storage = {});
 
 // Header "lod,width,box_sigma,box_ci,box_footprints,box_samples,gaussian_sigma,
 // gaussian_ci,gaussian_footprints,gaussian_samples", one row per LOD,

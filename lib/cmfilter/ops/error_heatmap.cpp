@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/ops/error_heatmap.h"
 
+#include "cmfilter/io/output_date.h"
 #include "cmfilter/util/atomic_output.h"
 
 #include <OpenImageIO/imageio.h>
@@ -43,6 +44,7 @@ Status write_heatmap_png(const std::string& path, const HeatmapImage& image)
     if (!image.description.empty()) spec.attribute("ImageDescription", image.description);
     auto writer = OIIO::ImageOutput::create(out->temp_path());
     if (!writer) return runtime_error("OpenImageIO cannot write PNG: " + OIIO::geterror());
+    if (auto st = set_output_date(spec, *writer); !st) return st;
     if (!writer->open(out->temp_path(), spec) || !writer->write_image(OIIO::TypeDesc::UINT8, codes.data()) ||
         !writer->close())
         return out->write_error(writer->geterror());

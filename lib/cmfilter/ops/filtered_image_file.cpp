@@ -2,6 +2,7 @@
 #include "cmfilter/ops/filtered_image_file.h"
 
 #include "cmfilter/io/rgb_image_file.h"
+#include "cmfilter/io/recorded_path.h"
 #include "cmfilter/util/version.h"
 
 namespace cmfilter {
@@ -10,13 +11,15 @@ Status check_filtered_image_output(const std::string& path) { return check_rgb_i
 
 Status write_filtered_image(const std::string& path, const FilteredImage& image, const ColorConfig& config)
 {
+    // Inputs recorded relative to the output (io/recorded_path.h).
+    const auto rel = [&](const std::string& input) { return path_for_record(input, path); };
     ImageAttributes a;
     a.text = {{"cmfilter:kind", kFilteredImageKind},        {"cmfilter:version", version()},
-              {"cmfilter:method", to_string(image.method)}, {"cmfilter:moments", image.moments_path},
-              {"cmfilter:table", image.table_path},         {"cmfilter:driver_source", image.moments.source}};
-    if (!image.map_path.empty()) a.text.emplace_back("cmfilter:map", image.map_path);
-    if (!image.driver_path.empty()) a.text.emplace_back("cmfilter:driver", image.driver_path);
-    if (!image.histograms_path.empty()) a.text.emplace_back("cmfilter:histograms", image.histograms_path);
+              {"cmfilter:method", to_string(image.method)}, {"cmfilter:moments", rel(image.moments_path)},
+              {"cmfilter:table", rel(image.table_path)},    {"cmfilter:driver_source", rel(image.moments.source)}};
+    if (!image.map_path.empty()) a.text.emplace_back("cmfilter:map", rel(image.map_path));
+    if (!image.driver_path.empty()) a.text.emplace_back("cmfilter:driver", rel(image.driver_path));
+    if (!image.histograms_path.empty()) a.text.emplace_back("cmfilter:histograms", rel(image.histograms_path));
     a.numbers = {{"cmfilter:lod", image.lod}, {"cmfilter:lod_requested", image.lod_requested}};
     return write_rgb_image(path, image.width, image.height, 3, image.rgb, image.linear_space, a, config);
 }

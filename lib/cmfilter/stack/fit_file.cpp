@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/stack/fit_file.h"
 
+#include "cmfilter/io/recorded_path.h"
 #include "cmfilter/io/artefact_file.h"
 #include "cmfilter/io/image_reading.h"
 #include "cmfilter/io/metadata.h"
@@ -101,7 +102,7 @@ Status write_fit_exr(const std::string& path, const LinearFit& fit, const FitFil
     spec.attribute("cmfilter:channels", fit.channels);
     spec.attribute("cmfilter:encoding", encoding_name(fit.encoding));
     spec.attribute("cmfilter:colorspace", fit.colorspace);
-    spec.attribute("cmfilter:source", info.source);
+    spec.attribute("cmfilter:source", path_for_record(info.source, path));
     spec.attribute("cmfilter:layout",
                    fit.model == LinearModel::PtmLrgb
                        ? "value_c(l) = c * sum_k L.ak basis_k(l) (c: the base colour channel; basis_k: linear_model.h)"
@@ -128,13 +129,10 @@ Status write_fit_exr(const std::string& path, const LinearFit& fit, const FitFil
 
 Expected<LinearFit> read_fit_exr(const std::string& path, FitFileInfo* info)
 {
-    auto image = read_image(path);
-    if (!image) return image.error();
-    // Re-open for the metadata (read_image keeps only pixels and a few attributes).
-    auto in = OIIO::ImageInput::open(path);
-    if (!in) return io_error("cannot read '" + path + "': " + OIIO::geterror());
-    const OIIO::ImageSpec& spec = in->spec();
-    if (auto st = check_artefact_kind(spec, path, kLinearFitKind, "linear fit", kFormatVersion); !st) return st.error();
+    auto artefact = read_artefact_image(path, kLinearFitKind, "linear fit", kFormatVersion);
+    if (!artefact) return artefact.error();
+    const OIIO::ImageSpec& spec = artefact->spec;
+    ImageData* image = &artefact->image;
 
     const std::string model_name = spec.get_string_attribute("cmfilter:model");
     const auto model = parse_linear_model(model_name);
@@ -193,7 +191,7 @@ Expected<LinearFit> read_fit_exr(const std::string& path, FitFileInfo* info)
                                        : double_attribute(spec, "cmfilter:condition_number");
 
     if (info) {
-        info->source = spec.get_string_attribute("cmfilter:source");
+        info->source = path_from_record(spec.get_string_attribute("cmfilter:source"), path);
         info->extra.clear();
         for (const OIIO::ParamValue& p : spec.extra_attribs) {
             const std::string name = p.name().string();

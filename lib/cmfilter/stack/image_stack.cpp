@@ -53,7 +53,7 @@ Expected<StackImage> load_stack_image(const std::string& path, const StackLoadOp
         !st)
         return st.error();
     if (options.encoding == StackEncoding::DisplayEncoded) {
-        auto srgb = config.resolve("sRGB");
+        auto srgb = config.srgb_texture_name();
         if (!srgb) return srgb.error();
         if (auto st =
                 convert_color_channels(img.pixels, img.channels,
@@ -97,7 +97,7 @@ std::string stack_colorspace(const ImageColorSpace& first, const StackLoadOption
     if (config.is_data(first.colorspace)) return first.colorspace;
     if (options.encoding == StackEncoding::SceneLinear) return config.scene_linear_name();
     // Display-encoded: the values are now in the config's sRGB encoding.
-    auto srgb = config.resolve("sRGB");
+    auto srgb = config.srgb_texture_name();
     return srgb ? *srgb : first.colorspace;
 }
 

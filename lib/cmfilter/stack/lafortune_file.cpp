@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/stack/lafortune_file.h"
 
+#include "cmfilter/io/recorded_path.h"
 #include "cmfilter/io/artefact_file.h"
 #include "cmfilter/io/image_reading.h"
 #include "cmfilter/io/metadata.h"
@@ -105,7 +106,7 @@ Status write_lafortune_exr(const std::string& path, const LafortuneFit& fit, con
     set_double_attribute(spec, "cmfilter:view_z", fit.view.z);
     spec.attribute("cmfilter:encoding", to_string(fit.encoding));
     spec.attribute("cmfilter:colorspace", fit.colorspace);
-    spec.attribute("cmfilter:source", source);
+    spec.attribute("cmfilter:source", path_for_record(source, path));
     spec.attribute("cmfilter:layout",
                    fit.variant == LafortuneVariant::Luminance
                        ? "value_c(u) = c * uz * (L.rho + sum_i max(0, L.i.a . u)^L.i.n) (c: the base colour channel)"
@@ -115,13 +116,10 @@ Status write_lafortune_exr(const std::string& path, const LafortuneFit& fit, con
 
 Expected<LafortuneFit> read_lafortune_exr(const std::string& path, std::string* source)
 {
-    auto image = read_image(path);
-    if (!image) return image.error();
-    auto in = OIIO::ImageInput::open(path);
-    if (!in) return io_error("cannot read '" + path + "': " + OIIO::geterror());
-    const OIIO::ImageSpec& spec = in->spec();
-    if (auto st = check_artefact_kind(spec, path, kLafortuneFitKind, "Lafortune fit", kFormatVersion); !st)
-        return st.error();
+    auto artefact = read_artefact_image(path, kLafortuneFitKind, "Lafortune fit", kFormatVersion);
+    if (!artefact) return artefact.error();
+    const OIIO::ImageSpec& spec = artefact->spec;
+    ImageData* image = &artefact->image;
 
     LafortuneFit fit;
     const std::string variant = spec.get_string_attribute("cmfilter:variant");
@@ -199,7 +197,7 @@ Expected<LafortuneFit> read_lafortune_exr(const std::string& path, std::string* 
                                  ", expected at least 1");
             fit.parameters[t * params + j] = v;
         }
-    if (source) *source = spec.get_string_attribute("cmfilter:source");
+    if (source) *source = path_from_record(spec.get_string_attribute("cmfilter:source"), path);
     return fit;
 }
 

@@ -9,7 +9,7 @@ Status convert_stack_encoding(std::vector<float>& values, int channels, StackEnc
                               const ColorConfig& config)
 {
     if (from == to || channels <= 0) return ok();
-    auto srgb = config.resolve("sRGB");
+    auto srgb = config.srgb_texture_name();
     if (!srgb) return srgb.error();
     return convert_color_channels(values, channels, [&](std::vector<float>& rgb) {
         return to == StackEncoding::SceneLinear ? config.to_scene_linear(rgb, *srgb)

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/synthesis/analysis_file.h"
 
+#include "cmfilter/io/recorded_path.h"
 #include "cmfilter/io/artefact_file.h"
 #include "cmfilter/io/image_reading.h"
 #include "cmfilter/io/metadata.h"
@@ -108,7 +109,7 @@ Status write_analysis_exr(const std::string& path, const SampleAnalysis& analysi
             texels.attribute("cmfilter:format_version", kFormatVersion);
             texels.attribute("cmfilter:version", version());
             texels.attribute("cmfilter:levels", static_cast<int>(analysis.levels.size()));
-            texels.attribute("cmfilter:sample", analysis.sample_path);
+            texels.attribute("cmfilter:sample", path_for_record(analysis.sample_path, path));
             texels.attribute("cmfilter:sample_kind", to_string(analysis.sample_kind));
             texels.attribute("cmfilter:sample_hash", analysis.sample_hash);
             texels.attribute("cmfilter:sample_images", analysis.sample_images);
@@ -116,7 +117,6 @@ Status write_analysis_exr(const std::string& path, const SampleAnalysis& analysi
             texels.attribute("cmfilter:channels", analysis.channels);
             texels.attribute("cmfilter:periodic", analysis.periodic ? 1 : 0);
             texels.attribute("cmfilter:neighbourhood", analysis.neighbourhood);
-            set_double_attribute(texels, "cmfilter:seconds", analysis.seconds);
         }
         std::vector<float> tp(level.texels() * static_cast<std::size_t>(1 + m));
         for (std::size_t t = 0; t < level.texels(); ++t) {
@@ -149,7 +149,7 @@ Expected<SampleAnalysis> read_analysis_exr(const std::string& path)
     auto bad = [&](const std::string& what) { return bad_input("'" + path + "' " + what); };
 
     SampleAnalysis analysis;
-    analysis.sample_path = spec0.get_string_attribute("cmfilter:sample");
+    analysis.sample_path = path_from_record(spec0.get_string_attribute("cmfilter:sample"), path);
     analysis.sample_hash = spec0.get_string_attribute("cmfilter:sample_hash");
     if (!is_hex_digest(analysis.sample_hash))
         return bad("has cmfilter:sample_hash '" + analysis.sample_hash + "'; expected 64 lowercase hex digits");
@@ -170,9 +170,13 @@ Expected<SampleAnalysis> read_analysis_exr(const std::string& path)
         return bad("has cmfilter:periodic " + std::to_string(periodic) + "; expected 0 or 1");
     analysis.periodic = periodic == 1;
     analysis.neighbourhood = spec0.get_int_attribute("cmfilter:neighbourhood", 0);
-    analysis.seconds = double_attribute(spec0, "cmfilter:seconds");
-    if (!std::isfinite(analysis.seconds) || analysis.seconds < 0)
-        return bad("has no valid cmfilter:seconds; expected a time >= 0");
+    // No time is written (outputs are the same bytes for the same inputs);
+    // files that record one must record a valid one.
+    if (spec0.find_attribute("cmfilter:seconds")) {
+        analysis.seconds = double_attribute(spec0, "cmfilter:seconds");
+        if (!std::isfinite(analysis.seconds) || analysis.seconds < 0)
+            return bad("has no valid cmfilter:seconds; expected a time >= 0");
+    }
     const int levels = spec0.get_int_attribute("cmfilter:levels", 0);
     if (levels < 1) return bad("has cmfilter:levels " + std::to_string(levels) + "; expected >= 1");
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/synthesis/coordinate_map_file.h"
 
+#include "cmfilter/io/recorded_path.h"
 #include "cmfilter/io/artefact_file.h"
 #include "cmfilter/io/image_reading.h"
 #include "cmfilter/io/metadata.h"
@@ -100,7 +101,7 @@ Status write_coordinate_map_exr(const std::string& path, const CoordinateMap& ma
             spec.attribute("cmfilter:kind", kCoordinateMapKind);
             spec.attribute("cmfilter:format_version", kFormatVersion);
             spec.attribute("cmfilter:version", version());
-            spec.attribute("cmfilter:sample", info.sample_path);
+            spec.attribute("cmfilter:sample", path_for_record(info.sample_path, path));
             spec.attribute("cmfilter:sample_hash", info.sample_hash);
             spec.attribute("cmfilter:sample_kind", info.sample_kind);
             spec.attribute("cmfilter:sample_periodic", info.sample_periodic ? 1 : 0);
@@ -109,7 +110,6 @@ Status write_coordinate_map_exr(const std::string& path, const CoordinateMap& ma
             spec.attribute("cmfilter:levels", info.levels);
             spec.attribute("cmfilter:toroidal", info.toroidal ? 1 : 0);
             spec.attribute("cmfilter:seed", std::to_string(info.seed));
-            set_double_attribute(spec, "cmfilter:seconds", info.seconds);
         }
         // Each texel the centre of the sample texel it copies, normalised.
         std::vector<float> uv(2 * level.texels());
@@ -135,7 +135,7 @@ Expected<CoordinateMap> read_coordinate_map_exr(const std::string& path)
 
     CoordinateMap map;
     CoordinateMapInfo& info = map.info;
-    info.sample_path = text_attribute(spec0, "cmfilter:sample");
+    info.sample_path = path_from_record(text_attribute(spec0, "cmfilter:sample"), path);
     info.sample_hash = text_attribute(spec0, "cmfilter:sample_hash");
     info.sample_kind = text_attribute(spec0, "cmfilter:sample_kind");
     if (info.sample_kind != "image" && info.sample_kind != "stack" && info.sample_kind != "btf")

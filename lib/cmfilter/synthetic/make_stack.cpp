@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/synthetic/make_stack.h"
 
+#include "cmfilter/io/recorded_path.h"
 #include "cmfilter/io/rgb_image_file.h"
 #include "cmfilter/stack/btf_manifest.h"
 #include "cmfilter/stack/image_stack.h"
@@ -175,6 +176,7 @@ struct Slot {
     fs::path light_file;   // the slot's .lp
     std::string relative;  // as the manifest names it
     Vec3 view;
+    fs::path placed;  // light_file where it will lie once the staging folder is committed
 };
 
 // Writes one view slot's files, its .lp last.
@@ -232,7 +234,6 @@ Status write_slot(const Slot& slot, std::size_t index, std::size_t slots, const 
     r["format"] = "cmfilter-synthetic-stack";
     r["version"] = kStackRecordVersion;
     r["cmfilter_version"] = version();
-    r["scene"] = scene_path;
     r["scene_sha256"] = scene_digest;
     r["surface"] = options.surface;
     r["surface_kind"] = to_string(surface.kind());
@@ -258,8 +259,10 @@ Status write_slot(const Slot& slot, std::size_t index, std::size_t slots, const 
                    "Lambertian facet facing the light gives 1";
     r["rays"] = stack.rays;
     r["hits"] = stack.hits;
-    r["render_seconds"] = stack.seconds;
+    // No time: the same inputs give the same bytes (the --json summary has it).
     const std::string record = stack_record_path(slot.light_file.string());
+    // Relative to where the record will lie, not to the staging folder.
+    r["scene"] = path_for_record(scene_path, stack_record_path(slot.placed.string()));
     if (auto st = write_stack_record(record, r); !st) return st;
     ++made.files;
     if (auto st = write_light_file(slot.light_file.string(), entries); !st) return st;
@@ -329,14 +332,15 @@ Expected<MadeStack> make_stack(const MakeStackOptions& options, const ColorConfi
     std::vector<Slot> slots;
     std::vector<fs::path> last;  // moved into place last, in this order
     if (!several) {
-        slots.push_back({staging->path() / output.filename(), output.filename().string(), normalize(options.views[0])});
+        slots.push_back({staging->path() / output.filename(), output.filename().string(), normalize(options.views[0]),
+                         destination / output.filename()});
         last.push_back(output.filename());
     } else {
         for (std::size_t k = 0; k < options.views.size(); ++k) {
             char name[32];
             std::snprintf(name, sizeof name, "view-%02zu", k);
-            slots.push_back(
-                {staging->path() / name / "stack.lp", std::string(name) + "/stack.lp", normalize(options.views[k])});
+            slots.push_back({staging->path() / name / "stack.lp", std::string(name) + "/stack.lp",
+                             normalize(options.views[k]), destination / name / "stack.lp"});
             last.push_back(fs::path(name) / "stack.lp");
         }
         last.push_back(output.filename());

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/synthetic/stack_record.h"
 
+#include "cmfilter/io/recorded_path.h"
 #include "cmfilter/io/json_document.h"
 #include "cmfilter/io/json_reading.h"
 #include "cmfilter/util/sha256.h"
@@ -62,7 +63,7 @@ Expected<MakeStackOptions> read_stack_record(const std::string& path)
     MakeStackOptions o;
     auto scene = read_string(root, "scene");
     if (!scene) return scene.error();
-    o.scene = *scene;
+    o.scene = path_from_record(*scene, path);
     auto digest = read_string(root, "scene_sha256");
     if (!digest) return digest.error();
     auto now = sha256_file_hex(o.scene);

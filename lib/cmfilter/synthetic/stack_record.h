@@ -16,8 +16,10 @@
 //    "lights": "stack.lp", "images": ".exr",
 //    "normals": "stack.normals.exr", "albedo": "stack.albedo.exr" | null,
 //    "frame": "...", "shading": "...",     words, for a reader
-//    "rays": N, "hits": N, "render_seconds": s}
-// Paths other than the scene's are relative to the record's folder.
+//    "rays": N, "hits": N}
+// Paths are relative to the record's folder (the scene's too, since
+// io/recorded_path.h; an absolute scene path, as older records hold, is read
+// as it is).
 // make_stack writes it; this file reads it back.
 #pragma once
 

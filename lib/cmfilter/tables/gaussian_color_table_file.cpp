@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/tables/gaussian_color_table_file.h"
 
+#include "cmfilter/io/recorded_path.h"
 #include "cmfilter/io/artefact_file.h"
+#include "cmfilter/io/linear_space_attributes.h"
 #include "cmfilter/util/atomic_output.h"
 #include "cmfilter/io/image_reading.h"
 #include "cmfilter/io/metadata.h"
@@ -20,7 +22,7 @@ constexpr int kFormatVersion = 1;
 }  // namespace
 
 Status write_gaussian_color_table(const std::string& path, const GaussianColorTable& table,
-                                  const GaussianColorTableInfo& info)
+                                  const GaussianColorTableInfo& info, const ExrOutputOptions& storage)
 {
     auto out = AtomicOutput::begin(path);
     if (!out) return out.error();
@@ -28,7 +30,7 @@ Status write_gaussian_color_table(const std::string& path, const GaussianColorTa
 
     OIIO::ImageSpec spec(ax.values, ax.sigmas, 3, OIIO::TypeDesc::FLOAT);
     spec.attribute("compression", "zip");
-    spec.attribute("oiio:ColorSpace", info.source.linear_space);
+    set_linear_space_attributes(spec, info.source.linear_space, info.source.linear_interop_id);
     spec.attribute("cmfilter:kind", kGaussianColorTableKind);
     spec.attribute("cmfilter:format_version", kFormatVersion);
     spec.attribute("cmfilter:version", version());
@@ -46,13 +48,12 @@ Status write_gaussian_color_table(const std::string& path, const GaussianColorTa
     dbl("cmfilter:sigma_max", ax.sigma_max);
     spec.attribute("cmfilter:sigma_spacing", to_string(ax.spacing));
     const ColorMapProvenance& src = info.source;
-    spec.attribute("cmfilter:source", src.path);
+    spec.attribute("cmfilter:source", path_for_record(src.path, path));
     spec.attribute("cmfilter:source_sha256", src.sha256);
     spec.attribute("cmfilter:source_size", std::to_string(src.image_width) + "x" + std::to_string(src.image_height));
     spec.attribute("cmfilter:source_selection", src.selection);
     spec.attribute("cmfilter:colorspace", src.colorspace);
     spec.attribute("cmfilter:colorspace_rule", src.colorspace_rule);
-    spec.attribute("cmfilter:linear_space", src.linear_space);
     spec.attribute("cmfilter:ocio_config", src.ocio_config);
     if (info.lookup_error) {
         spec.attribute("cmfilter:lookup_error_samples", info.lookup_error_samples);
@@ -69,20 +70,24 @@ Status write_gaussian_color_table(const std::string& path, const GaussianColorTa
         spec.attribute("cmfilter:tolerance_search", info.tolerance->search);
     }
 
-    return write_float_artefact(*out, spec, table.data().data());
+    return write_float_artefact(*out, spec, table.data().data(), storage);
 }
 
 Expected<LoadedGaussianColorTable> read_gaussian_color_table(const std::string& path)
 {
-    auto image = read_image(path);
-    if (!image) return image.error();
-    // Re-open for the metadata (read_image keeps only pixels and a few attributes).
-    auto in = OIIO::ImageInput::open(path);
-    if (!in) return io_error("cannot read '" + path + "': " + OIIO::geterror());
-    const OIIO::ImageSpec& spec = in->spec();
-
-    if (auto st = check_artefact_kind(spec, path, kGaussianColorTableKind, "colour table", kFormatVersion); !st)
-        return st.error();
+    // The axes' sizes before any pixel is read.
+    const auto axes_fit = [&](const OIIO::ImageSpec& header) -> Status {
+        if (header.get_int_attribute("cmfilter:values", 0) != header.width ||
+            header.get_int_attribute("cmfilter:sigmas", 0) != header.height || header.nchannels != 3)
+            return bad_input("'" + path + "' has inconsistent cmfilter metadata (axes do not match " +
+                             std::to_string(header.width) + " x " + std::to_string(header.height) + " pixels of " +
+                             std::to_string(header.nchannels) + " channels, expected 3)");
+        return ok();
+    };
+    auto artefact = read_artefact_image(path, kGaussianColorTableKind, "colour table", kFormatVersion, axes_fit);
+    if (!artefact) return artefact.error();
+    const OIIO::ImageSpec& spec = artefact->spec;
+    ImageData* image = &artefact->image;
 
     const auto dbl = [&](const char* name) { return double_attribute(spec, name); };
     TableAxes ax;
@@ -107,12 +112,13 @@ Expected<LoadedGaussianColorTable> read_gaussian_color_table(const std::string& 
     LoadedGaussianColorTable out{GaussianColorTable(ax, std::move(image->pixels)), {}};
     GaussianColorTableInfo& info = out.info;
     info.baked_by = spec.get_string_attribute("cmfilter:version");
-    info.source.path = spec.get_string_attribute("cmfilter:source");
+    info.source.path = path_from_record(spec.get_string_attribute("cmfilter:source"), path);
     info.source.sha256 = spec.get_string_attribute("cmfilter:source_sha256");
     info.source.selection = spec.get_string_attribute("cmfilter:source_selection");
     info.source.colorspace = spec.get_string_attribute("cmfilter:colorspace");
     info.source.colorspace_rule = spec.get_string_attribute("cmfilter:colorspace_rule");
     info.source.linear_space = spec.get_string_attribute("cmfilter:linear_space");
+    info.source.linear_interop_id = spec.get_string_attribute("colorInteropID");
     info.source.ocio_config = spec.get_string_attribute("cmfilter:ocio_config");
     info.lookup_error_samples = spec.get_int_attribute("cmfilter:lookup_error_samples", 0);
     if (info.lookup_error_samples > 0) {

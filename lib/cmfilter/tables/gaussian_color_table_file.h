@@ -6,6 +6,7 @@
 #pragma once
 
 #include "cmfilter/colormap/color_map_loading.h"
+#include "cmfilter/io/exr_output_options.h"
 #include "cmfilter/util/error.h"
 #include "cmfilter/color/error_summary.h"
 #include "cmfilter/tables/gaussian_color_table.h"
@@ -37,8 +38,9 @@ struct GaussianColorTableInfo {
     std::string baked_by;                           // cmfilter version
 };
 
+// `storage`: pixel type, tiles and compression (default float, scanlines, zip).
 Status write_gaussian_color_table(const std::string& path, const GaussianColorTable& table,
-                                  const GaussianColorTableInfo& info);
+                                  const GaussianColorTableInfo& info, const ExrOutputOptions& storage = {});
 
 struct LoadedGaussianColorTable {
     GaussianColorTable table;

@@ -57,7 +57,10 @@ Expected<TableColorMap> load_table_color_map(const LoadedGaussianColorTable& tab
                 "TableColorMapOptions::map_override");
         out.warnings.push_back(what + "; using it as TableColorMapOptions::map_override asks");
     }
-    if (!src.linear_space.empty() && src.linear_space != config.scene_linear_name())
+    // The same space under another name (another config) is the same space.
+    const auto baked_in = src.linear_space.empty() ? Expected<std::string>(std::string())
+                                                   : config.resolve(src.linear_space);
+    if (!src.linear_space.empty() && (!baked_in || *baked_in != config.scene_linear_name()))
         out.warnings.push_back(where + " was baked in scene-linear '" + src.linear_space +
                                "' but the OpenColorIO config's scene_linear is '" + config.scene_linear_name() + "'");
     return out;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/texture/box_pyramid_file.h"
 
+#include "cmfilter/io/output_date.h"
 #include "cmfilter/texture/box_pyramid.h"
 #include "cmfilter/util/stopwatch.h"
 #include "cmfilter/util/write_failure.h"
@@ -20,9 +21,9 @@ Expected<BoxPyramidFileTimes> write_box_pyramid_file(const BoxPyramidFileOptions
     };
     OIIO::ImageSpec spec(W, H, C, OIIO::TypeDesc::FLOAT);
     spec.channelnames = options.channel_names;
-    spec.tile_width = spec.tile_height = options.tile_size;
-    spec.tile_depth = 1;
-    spec.attribute("compression", options.compression);
+    ExrOutputOptions storage = options.storage;
+    if (storage.tile_width == 0 && storage.tile_height == 0) storage.tile_width = storage.tile_height = 64;
+    apply_exr_output_options(spec, storage);
     spec.attribute("textureformat", "Plain Texture");
     spec.attribute("openexr:levelmode", 1);     // MIPMAP_LEVELS
     spec.attribute("openexr:roundingmode", 0);  // ROUND_DOWN: level k is max(1, W >> k)
@@ -31,6 +32,7 @@ Expected<BoxPyramidFileTimes> write_box_pyramid_file(const BoxPyramidFileOptions
     if (!writer) return runtime_error("OpenImageIO cannot write EXR: " + OIIO::geterror());
     if (!writer->supports("mipmap") || !writer->supports("tiles"))
         return runtime_error("OpenImageIO's EXR writer cannot write tiled MIP-maps");
+    if (auto st = set_output_date(spec, *writer); !st) return st.error();
     // OpenImageIO keeps a writer's errors per thread: a tile row written on
     // the writing thread leaves its error here.
     std::string row_error;
@@ -42,7 +44,7 @@ Expected<BoxPyramidFileTimes> write_box_pyramid_file(const BoxPyramidFileOptions
 
     BoxPyramidFileTimes times;
     BoxPyramidAccumulator upper(W, H, C, options.threads);
-    const int tile = options.tile_size;
+    const int tile = storage.tile_height;  // level 0 goes out a row of tiles at a time
     const int tile_rows = std::min(tile, H);
     std::vector<float> level0[2];
     for (auto& b : level0) b.resize(static_cast<std::size_t>(W) * tile_rows * C);
@@ -77,6 +79,12 @@ Expected<BoxPyramidFileTimes> write_box_pyramid_file(const BoxPyramidFileOptions
             }
         });
         times.build_ms += t.elapsed_ms();
+        // Half files: a value past a half's range would be stored as an
+        // infinity (upper levels are means of level 0: within its range).
+        if (auto st = check_half_range(rows, static_cast<std::size_t>(y1 - y0) * W * C, storage, options.name); !st) {
+            wait_pending();
+            return st.error();
+        }
         // The previous row must be out before this one is handed over (one
         // writer, rows in order); its buffer is the one the next row fills.
         if (!wait_pending()) return write_failed();

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// Writing a box pyramid (box_pyramid.h) as a tiled, mip-mapped float32
-// OpenEXR that OpenImageIO's TextureSystem reads: level 0 streamed tile row
+// Writing a box pyramid (box_pyramid.h) as a tiled, mip-mapped float32 (or
+// half: ExrOutputOptions) OpenEXR that OpenImageIO's TextureSystem reads: level 0 streamed tile row
 // by tile row as the caller fills its rows, every upper level accumulated
 // from the same rows and appended at the end. Shared by the pyramids whose
 // channels are box means of per-texel functions of the driver: moment
@@ -12,6 +12,7 @@
 // (docs/benchmarks.md), so this overlap is what there is to win.
 #pragma once
 
+#include "cmfilter/io/exr_output_options.h"
 #include "cmfilter/util/error.h"
 
 #include <OpenImageIO/imageio.h>
@@ -27,8 +28,7 @@ struct BoxPyramidFileOptions {
     std::string name;  // the destination, for messages
     int width = 0, height = 0;
     std::vector<std::string> channel_names;  // one per channel
-    int tile_size = 64;
-    std::string compression = "zip";
+    ExrOutputOptions storage;                // tiles 0 x 0: 64 x 64
     int threads = 0;
     std::function<void(OIIO::ImageSpec&)> set_metadata;  // on level 0's spec
     std::function<void(double fraction)> progress;       // optional

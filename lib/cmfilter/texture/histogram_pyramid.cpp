@@ -13,8 +13,7 @@ namespace cmfilter {
 
 Expected<HistogramPyramidInfo> bake_histogram_pyramid(const HistogramBakeOptions& options)
 {
-    if (options.tile_size < 1)
-        return bad_input("tile size " + std::to_string(options.tile_size) + " is invalid (expected >= 1)");
+    if (auto st = check_exr_output_options(options.storage, "HistogramBakeOptions::storage"); !st) return st.error();
     auto out = AtomicOutput::begin(options.output_path);
     if (!out) return out.error();
     auto hashed = read_driver_and_hash(options.driver_read());
@@ -60,10 +59,9 @@ Expected<HistogramPyramidInfo> bake_histogram_pyramid(const HistogramBakeOptions
         std::snprintf(name, sizeof name, "h%03d", b);
         file.channel_names.push_back(name);
     }
-    file.tile_size = options.tile_size;
-    file.compression = options.compression;
+    file.storage = options.storage;
     file.threads = options.threads;
-    file.set_metadata = [&](OIIO::ImageSpec& spec) { set_histogram_pyramid_metadata(spec, info); };
+    file.set_metadata = [&](OIIO::ImageSpec& spec) { set_histogram_pyramid_metadata(spec, info, options.output_path); };
     // Level 0: the indicator of each texel's value, [f == v_b]; box means of
     // it are the discretised D_f of sec. 4.1 ("exact solutions"), and the
     // filtered colour is the inner product of eq. 8 over the v_b.

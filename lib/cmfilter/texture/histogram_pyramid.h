@@ -57,7 +57,9 @@ struct HistogramPyramidInfo {
 // TextureSystem reads), set on the level-0 spec being written / read back.
 // Reading gives BadInput naming `path` when the file is not a histogram
 // pyramid or its metadata is inconsistent with its channels.
-void set_histogram_pyramid_metadata(OIIO::ImageSpec& spec, const HistogramPyramidInfo& info);
+// The source is recorded relative to `path`, the file being written or read
+// (io/recorded_path.h).
+void set_histogram_pyramid_metadata(OIIO::ImageSpec& spec, const HistogramPyramidInfo& info, const std::string& path);
 Expected<HistogramPyramidInfo> get_histogram_pyramid_metadata(const OIIO::ImageSpec& spec, const std::string& path);
 
 struct HistogramBakeOptions : PyramidBakeOptions {};

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/texture/histogram_pyramid.h"
 
+#include "cmfilter/io/recorded_path.h"
 #include "cmfilter/util/version.h"
 
 #include <cmath>
@@ -10,7 +11,7 @@
 
 namespace cmfilter {
 
-void set_histogram_pyramid_metadata(OIIO::ImageSpec& spec, const HistogramPyramidInfo& info)
+void set_histogram_pyramid_metadata(OIIO::ImageSpec& spec, const HistogramPyramidInfo& info, const std::string& path)
 {
     const std::string wrap = to_string(info.wrap);
     spec.attribute("wrapmodes", wrap + "," + wrap);
@@ -34,7 +35,7 @@ void set_histogram_pyramid_metadata(OIIO::ImageSpec& spec, const HistogramPyrami
     spec.attribute("cmfilter:levels", info.levels);
     spec.attribute("cmfilter:wrap", wrap);
     spec.attribute("cmfilter:channel", info.channel);
-    spec.attribute("cmfilter:source", info.source);
+    spec.attribute("cmfilter:source", path_for_record(info.source, path));
     spec.attribute("cmfilter:source_sha256", info.source_sha256);
     spec.attribute("cmfilter:source_size", std::to_string(info.width) + "x" + std::to_string(info.height));
     spec.attribute("cmfilter:nonfinite_replaced", std::to_string(info.nonfinite_replaced));
@@ -57,7 +58,7 @@ Expected<HistogramPyramidInfo> get_histogram_pyramid_metadata(const OIIO::ImageS
     std::istringstream values(spec.get_string_attribute("cmfilter:values"));
     for (double v; values >> v;) info.values.push_back(v);
     info.channel = spec.get_string_attribute("cmfilter:channel");
-    info.source = spec.get_string_attribute("cmfilter:source");
+    info.source = path_from_record(spec.get_string_attribute("cmfilter:source"), path);
     info.source_sha256 = spec.get_string_attribute("cmfilter:source_sha256");
     info.nonfinite_replaced =
         std::strtoull(spec.get_string_attribute("cmfilter:nonfinite_replaced").c_str(), nullptr, 10);

@@ -24,8 +24,7 @@ namespace {
 // What can be refused before the driver is read.
 Status check_bake_options(const MomentBakeOptions& options)
 {
-    if (options.tile_size < 1)
-        return bad_input("tile size " + std::to_string(options.tile_size) + " is invalid (expected >= 1)");
+    if (auto st = check_exr_output_options(options.storage, "MomentBakeOptions::storage"); !st) return st;
     return check_output_path(options.output_path, "");
 }
 
@@ -74,10 +73,9 @@ Expected<MomentBakeResult> bake_moment_pyramid(const MomentBakeOptions& options,
     file.width = W;
     file.height = H;
     file.channel_names = {"m1", "m2"};
-    file.tile_size = options.tile_size;
-    file.compression = options.compression;
+    file.storage = options.storage;
     file.threads = options.threads;
-    file.set_metadata = [&](OIIO::ImageSpec& spec) { set_moment_pyramid_metadata(spec, info); };
+    file.set_metadata = [&](OIIO::ImageSpec& spec) { set_moment_pyramid_metadata(spec, info, options.output_path); };
     file.progress = options.progress;
     // Level 0's channels: f - c and (f - c)^2 about the reference value c.
     const double c = info.reference;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/texture/moment_pyramid_info.h"
 
+#include "cmfilter/io/recorded_path.h"
 #include "cmfilter/io/metadata.h"
 #include "cmfilter/util/version.h"
 
@@ -9,7 +10,7 @@
 
 namespace cmfilter {
 
-void set_moment_pyramid_metadata(OIIO::ImageSpec& spec, const MomentPyramidInfo& info)
+void set_moment_pyramid_metadata(OIIO::ImageSpec& spec, const MomentPyramidInfo& info, const std::string& path)
 {
     const std::string wrap = to_string(info.wrap);
     spec.attribute("wrapmodes", wrap + "," + wrap);
@@ -28,7 +29,7 @@ void set_moment_pyramid_metadata(OIIO::ImageSpec& spec, const MomentPyramidInfo&
     spec.attribute("cmfilter:wrap", wrap);
     spec.attribute("cmfilter:channel", info.channel);
     spec.attribute("cmfilter:channel_index", info.channel_index);
-    spec.attribute("cmfilter:source", info.source);
+    spec.attribute("cmfilter:source", path_for_record(info.source, path));
     spec.attribute("cmfilter:source_sha256", info.source_sha256);
     spec.attribute("cmfilter:source_size", std::to_string(info.width) + "x" + std::to_string(info.height));
     spec.attribute("cmfilter:source_pixel_type", info.source_pixel_type);
@@ -55,7 +56,7 @@ Expected<MomentPyramidInfo> get_moment_pyramid_metadata(const OIIO::ImageSpec& s
     info.driver_max = dbl("cmfilter:driver_max");
     info.channel = spec.get_string_attribute("cmfilter:channel");
     info.channel_index = spec.get_int_attribute("cmfilter:channel_index", 0);
-    info.source = spec.get_string_attribute("cmfilter:source");
+    info.source = path_from_record(spec.get_string_attribute("cmfilter:source"), path);
     info.source_sha256 = spec.get_string_attribute("cmfilter:source_sha256");
     info.source_pixel_type = spec.get_string_attribute("cmfilter:source_pixel_type");
     info.nonfinite_replaced =

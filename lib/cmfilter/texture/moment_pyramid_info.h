@@ -33,8 +33,9 @@ struct MomentPyramidInfo {
 };
 
 // Sets the cmfilter:* attributes (and the "wrapmodes" TextureSystem reads) on
-// the level-0 spec of a pyramid being written.
-void set_moment_pyramid_metadata(OIIO::ImageSpec& spec, const MomentPyramidInfo& info);
+// the level-0 spec of the pyramid being written to `path` (the source
+// recorded relative to it: io/recorded_path.h).
+void set_moment_pyramid_metadata(OIIO::ImageSpec& spec, const MomentPyramidInfo& info, const std::string& path);
 
 // Reads them back from a file's level-0 spec. BadInput naming `path` when the
 // file is not a moment pyramid, has another format version, or its metadata

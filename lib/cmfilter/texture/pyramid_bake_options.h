@@ -5,6 +5,7 @@
 #pragma once
 
 #include "cmfilter/io/driver_image.h"
+#include "cmfilter/io/exr_output_options.h"
 #include "cmfilter/math/texture_wrap.h"
 
 #include <string>
@@ -17,9 +18,10 @@ struct PyramidBakeOptions {
     std::string channel;      // name or index; empty: single-channel driver
     NonFinitePolicy nonfinite = NonFinitePolicy::Error;
     TextureWrap wrap = TextureWrap::Clamp;
-    int tile_size = 64;               // square tiles, as maketx's default
-    std::string compression = "zip";  // OpenEXR compression, as maketx's default
-    int threads = 0;                  // 0: all cores
+    // Pixel type, tiles and compression (io/exr_output_options.h); tiles
+    // 0 x 0 mean 64 x 64, maketx's default, as zip is.
+    ExrOutputOptions storage;
+    int threads = 0;  // 0: all cores
 
     DriverReadOptions driver_read() const
     {

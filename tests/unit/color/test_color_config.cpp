@@ -3,11 +3,15 @@
 // function and primaries set to the published formulas and matrices.
 #include "cmfilter/color/color_config.h"
 
+#include "test_images.h"
 #include "unit_test_support.h"
 
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <fstream>
+#include <string>
+#include <vector>
 
 using namespace cmfilter;
 
@@ -81,4 +85,91 @@ TEST_CASE("a config file that does not exist is a clear error")
     auto config = ColorConfig::load("/no/such/config.ocio");
     REQUIRE(!config);
     CHECK(config.error().message.find("/no/such/config.ocio") != std::string::npos);
+}
+
+namespace {
+
+// A small studio-style config: scene_linear ACEScg (the reference), an sRGB
+// texture space under a name cmfilter's built-in config does not use for
+// it, a data role, and a file rule for *_rec709.exr.
+std::string write_studio_config()
+{
+    const std::string path = cmfilter_test::temp_dir("cmfilter_color_config") + "/studio.ocio";
+    std::ofstream(path) << R"(ocio_profile_version: 2.1
+name: unit-studio
+strictparsing: true
+roles:
+  scene_linear: ACEScg
+  color_picking: Texture sRGB
+  data: Raw
+  default: ACEScg
+file_rules:
+  - !<Rule> {name: maps, colorspace: lin_rec709, pattern: "*_rec709", extension: "exr"}
+  - !<Rule> {name: Default, colorspace: default}
+displays:
+  d:
+    - !<View> {name: Raw, colorspace: Raw}
+colorspaces:
+  - !<ColorSpace> {name: ACEScg, aliases: [lin_ap1], isdata: false}
+  - !<ColorSpace>
+    name: Linear Rec.709 (sRGB)
+    aliases: [lin_rec709]
+    isdata: false
+    to_scene_reference: !<MatrixTransform> {matrix: [0.6130974024, 0.3395231462, 0.0473794514, 0, 0.0701937225, 0.9163538791, 0.0134523985, 0, 0.0206155929, 0.1095697729, 0.8698146342, 0, 0, 0, 0, 1]}
+  - !<ColorSpace>
+    name: Texture sRGB
+    aliases: [srgb_tx]
+    isdata: false
+    to_scene_reference: !<ExponentWithLinearTransform> {gamma: 2.4, offset: 0.055}
+  - !<ColorSpace> {name: Raw, isdata: true}
+)";
+    return path;
+}
+
+// A resolved name, or the error's message (so that a failed CHECK shows it).
+std::string text(const Expected<std::string>& name) { return name ? *name : "error: " + name.error().message; }
+
+}  // namespace
+
+TEST_CASE("a studio config: built-in names, roles, file rules and interop IDs resolve through it")
+{
+    auto config = ColorConfig::load(write_studio_config());
+    REQUIRE_MESSAGE(config, (config ? std::string() : config.error().message));
+    // Names cmfilter's own files record, through the built-in config's aliases.
+    CHECK(text(config->resolve("Linear Rec.709")) == "Linear Rec.709 (sRGB)");
+    CHECK(text(config->resolve("lin_ap1_scene")) == "ACEScg");
+    CHECK(text(config->resolve("sRGB")) == "Texture sRGB");
+    CHECK_FALSE(config->resolve("Display P3"));  // no name of it in this config
+    // Roles.
+    CHECK(config->role_space("scene_linear") == "ACEScg");
+    CHECK(config->role_space("data") == "Raw");
+    CHECK(config->role_space("texture_paint").empty());
+    // File rules: only a rule other than Default counts.
+    CHECK(config->file_rule_space("/maps/ramp_rec709.exr") == "Linear Rec.709 (sRGB)");
+    CHECK(config->file_rule_space("/maps/ramp.exr").empty());
+    CHECK(config->file_rule_space("/maps/ramp_rec709.png").empty());
+    // Interop IDs of this config's spaces, through the built-in names.
+    CHECK(config->interop_id("ACEScg") == "lin_ap1_scene");
+    CHECK(config->interop_id("Linear Rec.709 (sRGB)") == "lin_rec709_scene");
+    CHECK(config->interop_id("Raw").empty());
+    // The sRGB texture space decodes with the IEC formula; linear Rec.709
+    // converts to ACEScg with the published matrix (white stays white).
+    std::vector<float> rgb = {0.5f, 0.5f, 0.5f, 1, 0, 0};
+    REQUIRE(config->to_scene_linear(rgb, *config->srgb_texture_name()));
+    CHECK(rgb[0] == doctest::Approx(cmfilter_test::srgb_moncurve_to_linear(0.5)).epsilon(1e-6));
+    rgb = {1, 1, 1, 1, 0, 0};
+    REQUIRE(config->to_scene_linear(rgb, "Linear Rec.709"));
+    for (int c = 0; c < 3; ++c) CHECK(rgb[c] == doctest::Approx(1.0).epsilon(1e-6));
+    CHECK(rgb[3] == doctest::Approx(0.6131).epsilon(1e-4));
+    CHECK(rgb[4] == doctest::Approx(0.0702).epsilon(1e-3));
+    CHECK(rgb[5] == doctest::Approx(0.0206).epsilon(1e-3));
+}
+
+TEST_CASE("the built-in config's own interop IDs and its sRGB texture space")
+{
+    const ColorConfig config = cmfilter_test::builtin_color_config();
+    CHECK(config.interop_id(config.scene_linear_name()) == "lin_rec709_scene");
+    CHECK(config.interop_id("ACES2065-1") == "lin_ap0_scene");
+    CHECK(text(config.srgb_texture_name()) == "sRGB Encoded Rec.709");
+    CHECK(config.file_rule_space("anything.png").empty());
 }

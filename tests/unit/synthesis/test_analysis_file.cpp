@@ -108,7 +108,7 @@ TEST_CASE("analysis file: a written analysis reads back exactly")
     REQUIRE_MESSAGE(written, (written ? std::string() : written.error().message));
     auto b = read_analysis_exr(path);
     REQUIRE(b);
-    CHECK(b->sample_path == a.sample_path);
+    CHECK(cmfilter_test::same_file_path(b->sample_path, a.sample_path));
     CHECK(b->sample_hash == a.sample_hash);
     CHECK(b->sample_kind == SampleKind::Stack);
     CHECK(b->sample_images == 7);
@@ -116,7 +116,7 @@ TEST_CASE("analysis file: a written analysis reads back exactly")
     CHECK(b->channels == 2);
     CHECK(b->periodic);
     CHECK(b->neighbourhood == 1);
-    CHECK(b->seconds == a.seconds);
+    CHECK(b->seconds == 0.0);  // not recorded: the same inputs give the same bytes
     REQUIRE(b->levels.size() == 2);
     for (std::size_t l = 0; l < 2; ++l) {
         const LevelAnalysis &x = a.levels[l], &y = b->levels[l];

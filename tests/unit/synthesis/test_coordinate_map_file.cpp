@@ -119,7 +119,7 @@ TEST_CASE("coordinate map file: every level and field reads back exactly")
     REQUIRE_MESSAGE(written, (written ? std::string() : written.error().message));
     auto b = read_coordinate_map_exr(path);
     REQUIRE_MESSAGE(b, (b ? std::string() : b.error().message));
-    CHECK(b->info.sample_path == a.info.sample_path);
+    CHECK(cmfilter_test::same_file_path(b->info.sample_path, a.info.sample_path));
     CHECK(b->info.sample_hash == a.info.sample_hash);
     CHECK(b->info.sample_kind == "stack");
     CHECK(b->info.sample_periodic);
@@ -128,7 +128,7 @@ TEST_CASE("coordinate map file: every level and field reads back exactly")
     CHECK(b->info.levels == 3);
     CHECK(b->info.toroidal);
     CHECK(b->info.seed == 0xfedcba9876543210ull);
-    CHECK(b->info.seconds == a.info.seconds);
+    CHECK(b->info.seconds == 0.0);  // not recorded: the same inputs give the same bytes
     REQUIRE(b->levels.size() == 3);
     for (std::size_t l = 0; l < 3; ++l) {
         const CoordinateLevel &x = a.levels[l], &y = b->levels[l];
@@ -154,7 +154,7 @@ TEST_CASE("coordinate map file: a file with int attributes, as oiiotool writes, 
 {
     auto r = read_coordinate_map_exr(write_by_hand("oiiotool.exr", HandFile{}));
     REQUIRE_MESSAGE(r, (r ? std::string() : r.error().message));
-    CHECK(r->info.sample_path == "grass.png");
+    CHECK(cmfilter_test::same_file_path(r->info.sample_path, kDir + "/grass.png"));  // relative to the map
     CHECK(r->info.sample_hash == "0");
     CHECK(r->info.sample_periodic);
     CHECK_FALSE(r->info.toroidal);
