@@ -20,6 +20,8 @@ packages=(g++ make cmake pkg-config
           libopenimageio-dev openimageio-tools libopencolorio-dev libopenexr-dev libimath-dev
           libcli11-dev doctest-dev nlohmann-json3-dev libeigen3-dev libceres-dev gnuplot-nox python3 python3-skimage
           clang-format)
+# The tests: python3-jsonschema validates every command's --json against docs/cmfilter.schema.json.
+[ "$mode" = example ] || packages+=(python3-jsonschema)
 # The checked builds: clang with its sanitizer and libFuzzer runtimes, and
 # llvm-symbolizer for their reports.
 [ "$mode" = example ] || packages+=(clang libclang-rt-14-dev llvm)

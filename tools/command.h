@@ -136,6 +136,11 @@ FieldFlags exr_output_flags();
 // {"pixel_type", "compression", "tile": [W, H] or null, "lossy": words or ""}.
 nlohmann::json storage_json(const ExrOutputOptions& options);
 
+// --json: prints `summary` on stdout with "command" and "schema_version"
+// added (docs/json-schema.md; the schema file is docs/cmfilter.schema.json).
+constexpr int kJsonSchemaVersion = 1;
+void print_json(const std::string& command, nlohmann::json summary);
+
 // --probes (render, bench): BadInput unless 1 <= probes <= 64.
 Status check_probes(int probes);
 

@@ -105,7 +105,7 @@ Status run(ApplyArgs args)
         j["fraction_outside_domain"] = r.fraction_outside_domain;
         j["warnings"] = r.warnings;
         j["time_ms"] = total_ms;
-        std::cout << j.dump(2) << "\n";
+        print_json("apply", std::move(j));
     } else if (!args.quiet) {
         std::cout << std::setprecision(6) << "wrote " << args.output << ": " << to_string(r.method) << ", " << r.width
                   << " x " << r.height << " at lod " << r.lod;

@@ -202,7 +202,7 @@ Status run(const BakeColormapArgs& args)
                                  {"p95", info.lookup_error->p95},
                                  {"max", info.lookup_error->max}};
         }
-        std::cout << j.dump(2) << "\n";
+        print_json("bake-colormap", std::move(j));
     } else if (!args.quiet) {
         std::cout << "wrote " << args.output << ": gaussian colour table, " << ax.values << " values x " << ax.sigmas
                   << " sigmas\n"

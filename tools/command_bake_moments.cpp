@@ -98,7 +98,7 @@ Status run(const BakeMomentsArgs& args)
         if (histograms) j["histograms"] = {{"output", args.histograms}, {"values", histograms->values}};
         j["time_ms"] = {
             {"read", baked->read_ms}, {"build", baked->build_ms}, {"write", baked->write_ms}, {"total", total_ms}};
-        std::cout << j.dump(2) << "\n";
+        print_json("bake-moments", std::move(j));
     } else if (!args.quiet) {
         std::cout << std::setprecision(9) << "wrote " << args.output << ": moment pyramid, " << info.width << " x "
                   << info.height << ", " << info.levels << " levels\n"

@@ -101,7 +101,7 @@ Status run(const BakeNoiseArgs& args)
             j["lods"].push_back(
                 {{"lod", r.lod}, {"box", estimate_json(r.box)}, {"gaussian", estimate_json(r.gaussian)}});
         j["time_ms"] = total_ms;
-        std::cout << j.dump(2) << "\n";
+        print_json("bake-noise", std::move(j));
     } else if (!args.quiet) {
         double worst = 0;
         for (const auto& r : bake->rows)

@@ -133,7 +133,7 @@ Status run(CompareArgs& args)
                          {"result", gate.result},
                          {"exit_code", args.exit_code}};
         }
-        std::cout << j.dump(2) << "\n";
+        print_json("compare", std::move(j));
     } else if (!args.quiet) {
         print_table(*c);
     }

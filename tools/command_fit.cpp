@@ -213,7 +213,7 @@ Status run(const FitArgs& args, const CLI::App& app)
         if (format == FitFileFormat::Rti) j["quantisation_max_value_error"] = rti_quantisation.max_value_error;
         if (training) j["training_error"] = error_json(*training);
         if (held) j["held_out_error"] = error_json(*held);
-        std::cout << j.dump(2) << "\n";
+        print_json("fit", std::move(j));
     } else if (!args.quiet) {
         std::cout << "wrote " << args.output << ": " << to_string(*model) << " fit, " << fit->width << " x "
                   << fit->height << ", " << fit->channels << " channels, " << bytes << " bytes\n"
@@ -379,7 +379,7 @@ Status run_lafortune(const FitArgs& args, const CLI::App& app, LafortuneVariant 
         j["fallbacks"] = fit->fallbacks;
         if (training) j["training_error"] = error_json(*training);
         if (held) j["held_out_error"] = error_json(*held);
-        std::cout << j.dump(2) << "\n";
+        print_json("fit", std::move(j));
     } else if (!args.quiet) {
         std::cout << "wrote " << args.output << ": " << args.model << " fit, " << fit->width << " x " << fit->height
                   << ", " << fit->channels << " channels, " << bytes << " bytes\n"

@@ -4,6 +4,7 @@
 
 #include "cmfilter/ops/artefact_info.h"
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
 #include <iostream>
@@ -30,8 +31,15 @@ Status run(const InfoArgs& args)
         j["format"] = info->format;
         j["size"] = {info->width, info->height};
         j["channels"] = info->channels;
-        for (const auto& [key, value] : info->parameters) j["parameters"][key] = value;
-        std::cout << j.dump(2) << "\n";
+        // Numbers as numbers, as the file types them; text as text.
+        j["parameters"] = nlohmann::json::object();
+        for (const auto& [key, value] : info->parameters) {
+            const bool number = std::find(info->numeric.begin(), info->numeric.end(), key) != info->numeric.end();
+            nlohmann::json typed = value;
+            if (number) typed = nlohmann::json::parse(value, nullptr, false);
+            j["parameters"][key] = typed.is_discarded() ? nlohmann::json(value) : typed;
+        }
+        print_json("info", std::move(j));
         return ok();
     }
     std::cout << info->path << ": " << info->kind << "\n  " << info->description << "\n  " << info->format << ", "

@@ -131,7 +131,7 @@ Status run(const MakeStackArgs& args, const CLI::App& app)
         j["rays"] = made->rays;
         j["render_seconds"] = made->render_seconds;
         j["seconds"] = made->seconds;
-        std::cout << j.dump(2) << "\n";
+        print_json("make-stack", std::move(j));
     } else if (!args.quiet) {
         std::cout << "wrote " << args.output << ": " << made->light_files.size() << " view(s) x " << made->lights
                   << " lights, " << made->size << " x " << made->size << ", " << made->samples << " ray(s) per pixel, "

@@ -50,7 +50,7 @@ Status run(const NoiseImageArgs& args)
         j["size"] = {options.width, options.height};
         j["scale"] = options.scale;
         j["noise"] = to_string(options.spec);
-        std::cout << j.dump(2) << "\n";
+        print_json("noise-image", std::move(j));
     } else if (!args.quiet) {
         std::cout << "wrote " << args.output << ": noise image, " << options.width << " x " << options.height << ", "
                   << options.scale << " noise units per pixel\n"

@@ -79,7 +79,7 @@ Status run(const NormalsArgs& args)
         if (error)
             j["angle_degrees"] = {
                 {"mean", error->mean}, {"p95", error->p95}, {"max", error->max}, {"count", error->count}};
-        std::cout << j.dump(2) << "\n";
+        print_json("normals", std::move(j));
     } else if (!args.quiet) {
         if (!args.output.empty()) std::cout << "wrote " << args.output << ": normals of " << args.fit << "\n";
         std::cout

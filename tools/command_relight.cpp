@@ -91,7 +91,7 @@ Status run(const RelightArgs& args, const CLI::App& app)
             j["delta_e"] = {{"mean", e->delta_e.mean}, {"p95", e->delta_e.p95}, {"max", e->delta_e.max}};
             j["light_rmse"] = e->light_rmse;
             j["light_delta_e_mean"] = e->light_delta_e;
-            std::cout << j.dump(2) << "\n";
+            print_json("relight", std::move(j));
         } else if (!args.quiet) {
             std::cout << args.fit << " against " << slot->light_file << " (" << e->lights << " lights)\n"
                       << "  RMSE " << e->rmse << " (scene-linear)\n"
@@ -146,7 +146,7 @@ Status run(const RelightArgs& args, const CLI::App& app)
         j["light"] = {light->x, light->y, light->z};
         j["view"] = {seen.x, seen.y, seen.z};
         j["size"] = {width, height};
-        std::cout << j.dump(2) << "\n";
+        print_json("relight", std::move(j));
     } else if (!args.quiet) {
         std::cout << "wrote " << args.output << ": " << model << " relit at (" << light->x << ", " << light->y << ", "
                   << light->z << ")";

@@ -218,7 +218,7 @@ Status run(const RenderArgs& args)
             j["aov"] = {aov_paths[0], aov_paths[1], aov_paths[2]};
             if (!image->shaded.empty()) j["aov"].push_back(shaded_path);
         }
-        std::cout << j.dump(2) << "\n";
+        print_json("render", std::move(j));
     } else if (!args.quiet) {
         std::cout << "wrote " << args.output << ": " << image->width << " x " << image->height << ", "
                   << to_string(image->method) << ", " << image->samples << " ray(s) per pixel, " << hits

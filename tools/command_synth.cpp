@@ -177,7 +177,7 @@ Status run(const SynthArgs& args, const CLI::App& app)
             j["tiled_quality"] = quality_json(*tiled);
         }
         if (!args.preview.empty()) j["preview"] = args.preview;
-        std::cout << j.dump(2) << "\n";
+        print_json("synth", std::move(j));
     } else if (!args.quiet) {
         std::cout << "wrote " << args.output << ": " << options.width << " x " << options.height << " from "
                   << args.sample << " (" << analysis->width() << " x " << analysis->height() << "), k " << options.k

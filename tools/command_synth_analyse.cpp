@@ -54,7 +54,7 @@ Status run(const SynthAnalyseArgs& args)
                                    {"textons", level.textons},
                                    {"candidates", level.candidates},
                                    {"inertia", level.inertia}});
-        std::cout << j.dump(2) << "\n";
+        print_json("synth-analyse", std::move(j));
     } else if (!args.quiet) {
         std::cout << "wrote " << args.output << ": " << analysis->levels.size() << " level(s) of " << args.sample
                   << " (" << analysis->images_used << " of " << analysis->sample_images << " images), "

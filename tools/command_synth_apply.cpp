@@ -119,9 +119,10 @@ Status run(const SynthApplyArgs& args, const CLI::App& app)
 
     // What the surface costs: the sample image and the map, against the
     // full-size image the map stands for.
-    const double sample_bytes = 4.0 * image->image.width * image->image.height * image->image.channels;
-    const double map_bytes = 4.0 * 2 * full.width * full.height;
-    const double full_bytes = 4.0 * full.width * full.height * image->image.channels;
+    using Bytes = unsigned long long;
+    const Bytes sample_bytes = Bytes{4} * image->image.width * image->image.height * image->image.channels;
+    const Bytes map_bytes = Bytes{4} * 2 * full.width * full.height;
+    const Bytes full_bytes = Bytes{4} * full.width * full.height * image->image.channels;
     if (args.json) {
         nlohmann::json j;
         j["output"] = args.output;
@@ -135,7 +136,7 @@ Status run(const SynthApplyArgs& args, const CLI::App& app)
         j["size"] = {width, height};
         j["seconds"] = seconds;
         j["bytes"] = {{"sample", sample_bytes}, {"map", map_bytes}, {"full_size_image", full_bytes}};
-        std::cout << j.dump(2) << "\n";
+        print_json("synth-apply", std::move(j));
     } else if (!args.quiet) {
         std::cout << "wrote " << args.output << ": " << image->description << " through " << args.map << ", " << width
                   << " x " << height << " (LOD " << args.lod << ", " << to_string(*method) << "), " << seconds

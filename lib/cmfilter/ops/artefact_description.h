@@ -16,6 +16,7 @@ struct ArtefactInfo {
     std::string format;  // OpenImageIO format name
     int width = 0, height = 0, channels = 0;
     std::vector<std::pair<std::string, std::string>> parameters;  // without the "cmfilter:" prefix
+    std::vector<std::string> numeric;  // the names of the parameters that are numbers (the rest are text)
 };
 
 }  // namespace cmfilter

@@ -105,6 +105,12 @@ Expected<ArtefactInfo> read_artefact_info(const std::string& path)
         const std::string key = name.substr(9);
         if (key == "kind") info.kind = p.get_string();
         info.parameters.emplace_back(key, format_value(p));
+        const OIIO::TypeDesc t = p.type();
+        if (t.aggregate == OIIO::TypeDesc::SCALAR && t.arraylen == 0 &&
+            (t.basetype == OIIO::TypeDesc::FLOAT || t.basetype == OIIO::TypeDesc::DOUBLE ||
+             t.basetype == OIIO::TypeDesc::INT || t.basetype == OIIO::TypeDesc::UINT) &&
+            format_value(p).find_first_of("ni") == std::string::npos)  // not nan or inf
+            info.numeric.push_back(key);
     }
     if (info.kind.empty())
         return bad_input("'" + path +

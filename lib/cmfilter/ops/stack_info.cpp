@@ -59,12 +59,15 @@ Expected<ArtefactInfo> stack_info(const std::string& path)
         hi = std::max(hi, elevation_degrees(l.direction));
     }
     info.parameters.emplace_back("lights", std::to_string(lights.size()));
+    info.numeric.push_back("lights");
     info.parameters.emplace_back("elevation_min_degrees", number(lo));
     info.parameters.emplace_back("elevation_max_degrees", number(hi));
+    info.numeric.insert(info.numeric.end(), {"elevation_min_degrees", "elevation_max_degrees"});
     for (LinearModel m : {LinearModel::PtmRgb, LinearModel::Hsh2, LinearModel::Hsh3}) {
         auto c = check_light_set(lights, m);
-        info.parameters.emplace_back(std::string("condition_number_") + to_string(m),
-                                     c ? number(c->condition_number) : "unusable: " + c.error().message);
+        const std::string key = std::string("condition_number_") + to_string(m);
+        info.parameters.emplace_back(key, c ? number(c->condition_number) : "unusable: " + c.error().message);
+        if (c && std::isfinite(c->condition_number)) info.numeric.push_back(key);
     }
     info.description = "image stack (one view slot of a BTF): " + std::to_string(lights.size()) +
                        " images of one surface, each under one light of the .lp file";
@@ -106,6 +109,7 @@ Expected<ArtefactInfo> interchange_info(const std::string& path, FitFileFormat f
                        "expect; relight decodes them to scene-linear";
     info.parameters.emplace_back("model", to_string(fit->model));
     info.parameters.emplace_back("terms_per_channel", std::to_string(fit->terms()));
+    info.numeric.push_back("terms_per_channel");
     info.parameters.emplace_back("encoding", to_string(fit->encoding));
     return info;
 }
