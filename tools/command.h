@@ -136,6 +136,25 @@ FieldFlags exr_output_flags();
 // {"pixel_type", "compression", "tile": [W, H] or null, "lossy": words or ""}.
 nlohmann::json storage_json(const ExrOutputOptions& options);
 
+// -u/--update (update_option.cpp). A command's build digest: SHA-256 over
+// its name, cmfilter's version, the colour config's content (a path, or
+// empty when the command uses none; "built-in" when the path is not a file)
+// and every option given on the command line, each value that names a file
+// replaced by the file's SHA-256; options that do not change the output
+// (--output, --json, -q, --threads, -u, and `not_parameters`) left out.
+void add_update_option(CLI::App& app, bool& update);
+Expected<std::string> build_digest(const CLI::App& app, const std::vector<std::string>& not_parameters,
+                                   const std::string& color_config);
+// Whether every one of `outputs` records `digest` (io/build_record.h).
+bool outputs_record_build(const std::vector<std::string>& outputs, const std::string& digest);
+// What a command skipped for -u says: a line an output on stdout, or with
+// `json` the summary {"output", "up_to_date": true, "build"}.
+void report_up_to_date(const std::string& command, const std::vector<std::string>& outputs, const std::string& digest,
+                       bool json, bool quiet);
+// The colour config a command uses, for build_digest: --colorconfig, else
+// $OCIO, else "built-in".
+std::string color_config_for_record(const std::string& ocio_config_option);
+
 // --json: prints `summary` on stdout with "command" and "schema_version"
 // added (docs/json-schema.md; the schema file is docs/cmfilter.schema.json).
 constexpr int kJsonSchemaVersion = 1;

@@ -5,6 +5,8 @@
 // the driver or scene the table is for.
 #include "command.h"
 
+#include "cmfilter/io/build_record.h"
+
 #include "cmfilter/util/atomic_output.h"
 #include "cmfilter/colormap/color_map_loading.h"
 #include "cmfilter/scene/driver_sigma_range.h"
@@ -47,9 +49,10 @@ struct BakeColormapArgs {
     ExrOutputArgs storage;
     bool json = false;
     bool quiet = false;
+    bool update = false;
 };
 
-Status run(const BakeColormapArgs& args)
+Status run(const BakeColormapArgs& args, const CLI::App& app)
 {
     using Clock = std::chrono::steady_clock;
     if (auto st = check_output_path(args.output, ".exr"); !st) return st;
@@ -75,6 +78,14 @@ Status run(const BakeColormapArgs& args)
             << " is invalid (expected 0 < P <= 100; 100 is the maximum)";
         return bad_input(msg.str());
     }
+
+    auto digest = build_digest(app, {}, color_config_for_record(args.ocio_config));
+    if (!digest) return digest.error();
+    if (args.update && outputs_record_build({args.output}, *digest)) {
+        report_up_to_date("bake-colormap", {args.output}, *digest, args.json, args.quiet);
+        return ok();
+    }
+    storage->attributes.emplace_back(kBuildRecordAttribute, *digest);
 
     auto config = load_color_config(args.ocio_config);
     if (!config) return config.error();
@@ -159,6 +170,8 @@ Status run(const BakeColormapArgs& args)
         nlohmann::json j;
         j["output"] = args.output;
         j["storage"] = storage_json(*storage);
+        j["up_to_date"] = false;
+        j["build"] = *digest;
         j["kind"] = kGaussianColorTableKind;
         j["values"] = ax.values;
         j["sigmas"] = ax.sigmas;
@@ -290,7 +303,8 @@ Command setup_bake_colormap(CLI::App& parent)
     app->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
     FieldFlags flags = color_map_flags();
     for (auto& f : exr_output_flags()) flags.push_back(f);
-    return {app, [args] { return run(*args); }, flags};
+    add_update_option(*app, args->update);
+    return {app, [args, app] { return run(*args, *app); }, flags};
 }
 
 }  // namespace cmfilter::cli

@@ -4,6 +4,8 @@
 // MIP-mapped EXR that OpenImageIO's TextureSystem reads.
 #include "command.h"
 
+#include "cmfilter/io/build_record.h"
+
 #include "cmfilter/util/stopwatch.h"
 
 #include "cmfilter/util/atomic_output.h"
@@ -36,9 +38,10 @@ struct BakeMomentsArgs {
     ExrOutputArgs storage;
     bool json = false;
     bool quiet = false;
+    bool update = false;
 };
 
-Status run(const BakeMomentsArgs& args)
+Status run(const BakeMomentsArgs& args, const CLI::App& app)
 {
     if (auto st = check_output_path(args.output, ".exr"); !st) return st;
     if (!args.histograms.empty())
@@ -49,6 +52,17 @@ Status run(const BakeMomentsArgs& args)
     if (!nan) return nan.error();
     auto storage = exr_output_options_from_args(args.storage);
     if (!storage) return storage.error();
+    // The histogram pyramid is an output: its path is not a parameter.
+    auto digest = build_digest(app, {"--histograms"}, "");
+    if (!digest) return digest.error();
+    std::vector<std::string> outputs = {args.output};
+    if (!args.histograms.empty()) outputs.push_back(args.histograms);
+    if (args.update && outputs_record_build(outputs, *digest)) {
+        report_up_to_date("bake-moments", outputs, *digest, args.json, args.quiet);
+        return ok();
+    }
+    // Either output made alone (with or without --histograms) records the same build.
+    storage->attributes.emplace_back(kBuildRecordAttribute, *digest);
 
     MomentBakeOptions options;
     options.driver_path = args.driver_path;
@@ -85,6 +99,8 @@ Status run(const BakeMomentsArgs& args)
         nlohmann::json j;
         j["output"] = args.output;
         j["storage"] = storage_json(*storage);
+        j["up_to_date"] = false;
+        j["build"] = *digest;
         j["kind"] = kMomentPyramidKind;
         j["size"] = {info.width, info.height};
         j["levels"] = info.levels;
@@ -143,7 +159,8 @@ Command setup_bake_moments(CLI::App& parent)
     add_exr_output_options(*app, args->storage, "64 64");
     app->add_flag("--json", args->json, "Print a machine-readable summary on stdout");
     app->add_flag("-q,--quiet", args->quiet, "Print nothing on success (and no progress)");
-    return {app, [args] { return run(*args); }, exr_output_flags()};
+    add_update_option(*app, args->update);
+    return {app, [args, app] { return run(*args, *app); }, exr_output_flags()};
 }
 
 }  // namespace cmfilter::cli

@@ -5,6 +5,8 @@
 // (docs/bake-noise.md).
 #include "command.h"
 
+#include "cmfilter/io/build_record.h"
+
 #include "cmfilter/util/atomic_output.h"
 #include "cmfilter/noise/noise_sigma_bake.h"
 #include "cmfilter/noise/noise_sigma_table_file.h"
@@ -17,6 +19,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -36,6 +39,7 @@ struct BakeNoiseArgs {
     ExrOutputArgs storage;
     bool json = false;
     bool quiet = false;
+    bool update = false;
 };
 
 nlohmann::json estimate_json(const SigmaEstimate& e)
@@ -44,7 +48,7 @@ nlohmann::json estimate_json(const SigmaEstimate& e)
         {"sigma", e.sigma}, {"ci", e.half_width}, {"footprints", e.footprints}, {"samples", e.samples_per_footprint}};
 }
 
-Status run(const BakeNoiseArgs& args)
+Status run(const BakeNoiseArgs& args, const CLI::App& app)
 {
     if (auto st = check_output_path(args.output, ".exr"); !st) return st;
     if (!args.csv.empty())
@@ -56,6 +60,15 @@ Status run(const BakeNoiseArgs& args)
         return bad_input("--max-footprints " + std::to_string(args.max_footprints) + " is invalid (expected >= 1024)");
     auto storage = exr_output_options_from_args(args.storage);
     if (!storage) return storage.error();
+    // The CSV is a second output, not a parameter; -u needs the table only.
+    auto digest = build_digest(app, {"--csv"}, "");
+    if (!digest) return digest.error();
+    if (args.update && outputs_record_build({args.output}, *digest) &&
+        (args.csv.empty() || std::filesystem::is_regular_file(args.csv))) {
+        report_up_to_date("bake-noise", {args.output}, *digest, args.json, args.quiet);
+        return ok();
+    }
+    storage->attributes.emplace_back(kBuildRecordAttribute, *digest);
     auto spec = parse_noise_spec(args.noise);
     if (!spec) return spec.error();
     auto noise = make_noise(*spec);
@@ -86,6 +99,8 @@ Status run(const BakeNoiseArgs& args)
         nlohmann::json j;
         j["output"] = args.output;
         j["storage"] = storage_json(*storage);
+        j["up_to_date"] = false;
+        j["build"] = *digest;
         if (!args.csv.empty()) j["csv"] = args.csv;
         j["kind"] = kNoiseSigmaTableKind;
         j["noise"] = spec_text;
@@ -138,7 +153,8 @@ Command setup_bake_noise(CLI::App& parent)
     add_exr_output_options(*app, args->storage, "scanlines");
     app->add_flag("--json", args->json, "Print a machine-readable summary on stdout");
     app->add_flag("-q,--quiet", args->quiet, "Print nothing on success (and no progress)");
-    return {app, [args] { return run(*args); }, exr_output_flags()};
+    add_update_option(*app, args->update);
+    return {app, [args, app] { return run(*args, *app); }, exr_output_flags()};
 }
 
 }  // namespace cmfilter::cli

@@ -19,3 +19,8 @@ cmfilter_cli_case(NAME storage.bad.tile-large EXIT 3 STDERR "--tile 8192 64 is i
                   ABSENT ${SO} COMMAND ${CMF} bake-noise --noise fbm --tile 8192 64 -o ${SO})
 cmfilter_cli_case(NAME storage.bad.tile-one-side EXIT 1 STDERR "--tile"
                   ABSENT ${SO} COMMAND ${CMF} bake-colormap ${LUTS}/terrain.png --tile 64 -o ${SO})
+# -u/--update on the same commands (docs/storage.md#incremental-builds--u).
+add_test(NAME cli.update
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/check_update.sh ${CMF} ${LUTS}/terrain.png ${FIX}/driver-4values.png
+                 ${OUT}/update)
+set_tests_properties(cli.update PROPERTIES FIXTURES_REQUIRED "cli_dirs;cli_fixtures" LABELS cli ENVIRONMENT "OCIO=")

@@ -68,6 +68,7 @@ void apply_exr_output_options(OIIO::ImageSpec& spec, const ExrOutputOptions& opt
         spec.tile_depth = 1;
     }
     spec.attribute("compression", options.compression);
+    for (const auto& [name, value] : options.attributes) spec.attribute(name, value);
 }
 
 std::string exr_output_loss(const ExrOutputOptions& options)

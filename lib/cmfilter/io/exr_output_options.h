@@ -11,6 +11,8 @@
 
 #include <cstddef>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace cmfilter {
 
@@ -21,6 +23,9 @@ struct ExrOutputOptions {
     int tile_width = 0;  // 0 with tile_height 0: the artefact's own default (scanlines, or 64 for pyramids)
     int tile_height = 0;
     std::string compression = "zip";  // OpenEXR's names: none, rle, zips, zip, piz, pxr24, b44, b44a, dwaa, dwab
+    // Further text attributes the file records (name, value): the command's
+    // build record (cmfilter:build, io/build_record.h), a pipeline's own.
+    std::vector<std::pair<std::string, std::string>> attributes;
 };
 
 const char* to_string(ExrPixelType type);
@@ -31,7 +36,7 @@ Expected<ExrPixelType> parse_exr_pixel_type(const std::string& text);
 // side 0 and not the other).
 Status check_exr_output_options(const ExrOutputOptions& options, const std::string& owner);
 
-// Sets the pixel type, tiles (when given) and compression on `spec`.
+// Sets the pixel type, tiles (when given), compression and attributes on `spec`.
 void apply_exr_output_options(OIIO::ImageSpec& spec, const ExrOutputOptions& options);
 
 // Whether these options lose precision (half pixels; pxr24 on floats, which
