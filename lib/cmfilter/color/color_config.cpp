@@ -5,6 +5,7 @@
 
 #include <OpenColorIO/OpenColorIO.h>
 
+#include <algorithm>
 #include <sstream>
 
 namespace OCIO = OCIO_NAMESPACE;
@@ -156,8 +157,16 @@ Status apply(const OCIO::ConstConfigRcPtr& config, std::vector<float>& rgb, cons
         // absolute on sRGB decoding, the whole accuracy budget of a table).
         auto cpu =
             processor->getOptimizedCPUProcessor(OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32, OCIO::OPTIMIZATION_LOSSLESS);
-        OCIO::PackedImageDesc desc(rgb.data(), static_cast<long>(rgb.size() / 3), 1, 3);
-        cpu->apply(desc);
+        // In rows of at most 4096 pixels: OpenColorIO converts a row through
+        // buffers of its own the row's width (a whole image as one row cost
+        // about 50 bytes a pixel more).
+        constexpr std::size_t kRow = 4096;
+        const std::size_t pixels = rgb.size() / 3;
+        for (std::size_t first = 0; first < pixels; first += kRow) {
+            const std::size_t n = std::min(kRow, pixels - first);
+            OCIO::PackedImageDesc desc(rgb.data() + 3 * first, static_cast<long>(n), 1, 3);
+            cpu->apply(desc);
+        }
     } catch (const OCIO::Exception& e) {
         return runtime_error("OpenColorIO cannot convert '" + src + "' to '" + dst + "': " + e.what());
     }
