@@ -55,8 +55,15 @@ Status check_texture_level(const OIIO::ImageSpec& spec, int level, const std::st
 
 std::shared_ptr<OIIO::TextureSystem> make_private_texture_system()
 {
-    return std::shared_ptr<OIIO::TextureSystem>(
-        OIIO::TextureSystem::create(false), [](OIIO::TextureSystem* ts) { OIIO::TextureSystem::destroy(ts, true); });
+    std::shared_ptr<OIIO::TextureSystem> ts(OIIO::TextureSystem::create(false),
+                                            [](OIIO::TextureSystem* t) { OIIO::TextureSystem::destroy(t, true); });
+    // Its tile cache: OpenImageIO's default 1 GB, but at most a quarter of
+    // what this process may still allocate (a farm slot's limit), and at
+    // least 32 MB (a few rows of tiles of any pyramid).
+    const double budget_mb = static_cast<double>(memory_budget().bytes) / (1024.0 * 1024.0);
+    const float cache_mb = static_cast<float>(std::clamp(budget_mb / 4, 32.0, 1024.0));
+    ts->attribute("max_memory_MB", cache_mb);
+    return ts;
 }
 
 int reachable_texture_levels(int width, int height, int levels)

@@ -33,7 +33,9 @@ Status check_tiled_mipmap(OIIO::ImageInput& in, int levels, const std::string& p
 Status check_texture_level(const OIIO::ImageSpec& spec, int level, const std::string& path);
 
 // A TextureSystem of the caller's own, so that its cache and options are
-// nobody else's; destroyed with its last owner.
+// nobody else's; destroyed with its last owner. Its tile cache holds at most
+// a quarter of the memory budget (util/memory_budget.h), between 32 MB and
+// OpenImageIO's default of 1 GB.
 std::shared_ptr<OIIO::TextureSystem> make_private_texture_system();
 
 // Levels TextureSystem can select for a pyramid of `levels` levels over a
