@@ -81,7 +81,7 @@ case "$mode" in
     if [ "$mode" = test ] || [ "$mode" = test-thread ]; then
       echo "bootstrap: the threaded tests under ThreadSanitizer"
       cmake -S . -B build-thread "${checked_flags[@]}" -DCMFILTER_PRECOMPILE_HEADERS=ON -DCMFILTER_SANITIZE=thread
-      cmake --build build-thread -j"$jobs" --target cmfilter_cli cmfilter_unit_tests cmfilter_make_fixtures
+      cmake --build build-thread -j"$jobs" --target cmfilter_cli cmfilter_thread_tests cmfilter_make_fixtures
       (cd build-thread && ctest --output-on-failure -j"$jobs" -L threads)
     fi
     ;;

@@ -18,8 +18,10 @@ add_test(NAME cli.faults.concurrent-writers
 set_tests_properties(cli.faults.kill-table cli.faults.kill-moments cli.faults.kill-render cli.faults.full-disk
                      cli.faults.bad-paths cli.faults.concurrent-writers
                      PROPERTIES LABELS "cli;faults" FIXTURES_REQUIRED cli_dirs ENVIRONMENT "OCIO=" TIMEOUT 300)
-# Under a sanitizer each run is several times slower: fewer kills a series.
+# Under a sanitizer each run is several times slower: fewer kills a series,
+# fewer rounds of two writers.
 if(CMFILTER_SANITIZE)
   set_property(TEST cli.faults.kill-table cli.faults.kill-moments cli.faults.kill-render
-               APPEND PROPERTY ENVIRONMENT "CMFILTER_FAULT_KILLS=6")
+               APPEND PROPERTY ENVIRONMENT "CMFILTER_FAULT_KILLS=4")
+  set_property(TEST cli.faults.concurrent-writers APPEND PROPERTY ENVIRONMENT "CMFILTER_FAULT_ROUNDS=2")
 endif()

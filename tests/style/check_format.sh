@@ -28,27 +28,31 @@ else
   mapfile -t files < <(find lib tools tests examples luts -type f \( -name '*.cpp' -o -name '*.h' \) | LC_ALL=C sort)
 fi
 
-formatted=$(mktemp)
-trap 'rm -f "$formatted"' EXIT
-changed=0
 for f in "${files[@]}"; do
   if [ ! -f "$f" ]; then
     echo "check_format.sh: $f: no such file" >&2
     exit 2
   fi
-  # --style=file reads the .clang-format nearest the file: the repository's.
-  if ! "$clang_format" --style=file "$f" >"$formatted"; then
-    echo "check_format.sh: $clang_format failed on $f" >&2
-    exit 2
-  fi
-  if ! cmp -s "$formatted" "$f"; then
-    echo "$f"
-    changed=$((changed + 1))
-  fi
 done
 
-if [ "$changed" -gt 0 ]; then
-  echo "check_format.sh: $changed of ${#files[@]} files are not formatted; clang-format -i FILE formats one" >&2
+# One clang-format process for all the files (each process takes a tenth of
+# a second to start): --dry-run reports every place it would change, as
+# "FILE:LINE:COLUMN: error: code should be clang-formatted", and --style=file
+# reads the .clang-format nearest each file: the repository's.
+report=$(mktemp)
+trap 'rm -f "$report"' EXIT
+printf '%s\0' "${files[@]}" | xargs -0 "$clang_format" --style=file --dry-run --Werror >"$report" 2>&1
+status=$?
+mapfile -t changed < <(sed -nE 's/^(.*):[0-9]+:[0-9]+: (error|warning): code should be clang-formatted.*/\1/p' "$report" |
+                       LC_ALL=C sort -u)
+if [ "$status" -ne 0 ] && [ ${#changed[@]} -eq 0 ]; then
+  cat "$report" >&2
+  echo "check_format.sh: $clang_format failed" >&2
+  exit 2
+fi
+if [ ${#changed[@]} -gt 0 ]; then
+  printf '%s\n' "${changed[@]}"
+  echo "check_format.sh: ${#changed[@]} of ${#files[@]} files are not formatted; clang-format -i FILE formats one" >&2
   exit 1
 fi
 echo "check_format.sh: ${#files[@]} files formatted"
