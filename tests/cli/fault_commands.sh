@@ -8,15 +8,21 @@
 #   fault_command KIND OUTPUT [VARIANT]   KIND: table, moments or render;
 #                                         VARIANT 1: other parameters, so a
 #                                         different file
+# CMFILTER_FAULT_SMALL=1 (a sanitized build, whose runs are several times
+# slower): a quarter of the work each, a smaller table, driver and frame.
 
 fail=0
 fail() { echo "FAIL: $*"; fail=1; }
 
-# The moment bake's driver is 512 x 512 values, written by oiiotool.
+small=${CMFILTER_FAULT_SMALL:-0}
+
+# The moment bake's driver is 512 x 512 values (256 x 256 small), written by oiiotool.
 fault_setup() {
   CMF=$1 SRC=$2 WORK=$3
   rm -rf "$WORK" && mkdir -p "$WORK" || exit 1
-  oiiotool --pattern noise:type=uniform:min=0:max=1:seed=7 512x512 1 -d float -o "$WORK/driver.exr" ||
+  local size=512x512
+  [ "$small" = 1 ] && size=256x256
+  oiiotool --pattern noise:type=uniform:min=0:max=1:seed=7 "$size" 1 -d float -o "$WORK/driver.exr" ||
     { echo "cannot write the driver with oiiotool"; exit 1; }
 }
 
@@ -24,9 +30,10 @@ fault_command() {
   local kind=$1 output=$2 variant=${3:-0}
   case "$kind" in
     table)
-      local values=1024
-      [ "$variant" = 1 ] && values=512
-      CMD=("$CMF" bake-colormap "$SRC/luts/terrain.png" -o "$output" --values "$values" --sigmas 256 -q) ;;
+      local values=1024 sigmas=256
+      [ "$small" = 1 ] && values=512 sigmas=128
+      [ "$variant" = 1 ] && values=$((values / 2))
+      CMD=("$CMF" bake-colormap "$SRC/luts/terrain.png" -o "$output" --values "$values" --sigmas "$sigmas" -q) ;;
     moments)
       local wrap=clamp
       [ "$variant" = 1 ] && wrap=periodic
@@ -34,7 +41,8 @@ fault_command() {
     render)
       local method=gaussian
       [ "$variant" = 1 ] && method=naive
-      CMD=("$CMF" render "$SRC/examples/scenes/plane-fbm-terrain.json" -o "$output" --method "$method" -q) ;;
+      CMD=("$CMF" render "$SRC/examples/scenes/plane-fbm-terrain.json" -o "$output" --method "$method" -q)
+      [ "$small" = 1 ] && CMD+=(--size 320x180) ;;
     *) echo "fault_command: unknown kind $kind"; exit 2 ;;
   esac
 }

@@ -24,4 +24,6 @@ if(CMFILTER_SANITIZE)
   set_property(TEST cli.faults.kill-table cli.faults.kill-moments cli.faults.kill-render
                APPEND PROPERTY ENVIRONMENT "CMFILTER_FAULT_KILLS=4")
   set_property(TEST cli.faults.concurrent-writers APPEND PROPERTY ENVIRONMENT "CMFILTER_FAULT_ROUNDS=2")
+  set_property(TEST cli.faults.kill-table cli.faults.kill-moments cli.faults.kill-render
+               cli.faults.concurrent-writers APPEND PROPERTY ENVIRONMENT "CMFILTER_FAULT_SMALL=1")
 endif()

@@ -13,8 +13,18 @@
 # CMFILTER_FUZZ_TIMEOUT seconds (default 60: libFuzzer's clock is the wall
 # clock, and a long run shares the machine); the table gives each harness's
 # slowest input, to be timed alone.
+# The build must instrument the library for coverage
+# (CMFILTER_FUZZ_LIBRARY_COVERAGE, on by default; bootstrap.sh's CI tree
+# turns it off), or the fuzzer is blind inside it:
+#   cmake -S . -B build-fuzz -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Debug \
+#         "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -gline-tables-only" "-DCMFILTER_SANITIZE=address;undefined" \
+#         -DCMFILTER_FUZZ=ON -DBUILD_SHARED_LIBS=ON -DCMFILTER_PRECOMPILE_HEADERS=ON
 set -uo pipefail
 build=$(cd "$1" && pwd)
+if grep -q '^CMFILTER_FUZZ_LIBRARY_COVERAGE:BOOL=OFF' "$build/CMakeCache.txt" 2>/dev/null; then
+  echo "long_run.sh: $build does not instrument the library for coverage (CMFILTER_FUZZ_LIBRARY_COVERAGE=OFF)" >&2
+  exit 2
+fi
 runs=${2:-1000000}
 export CMFILTER_FUZZ_RUNS=$runs
 export CMFILTER_FUZZ_TIMEOUT=${CMFILTER_FUZZ_TIMEOUT:-60}
