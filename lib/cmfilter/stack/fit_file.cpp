@@ -147,11 +147,8 @@ Expected<LinearFit> read_fit_exr(const std::string& path, FitFileInfo* info)
     if (fit.channels <= 0 || (fit.model == LinearModel::PtmLrgb && fit.channels != 1 && fit.channels != 3))
         return bad_input("'" + path + "' has cmfilter:channels " + std::to_string(fit.channels) + ", expected " +
                          (fit.model == LinearModel::PtmLrgb ? "1 or 3 for ptm-lrgb" : "a positive count"));
-    // The stride in 64 bits: the declared channel count can be any int, and
-    // channels x terms past INT_MAX must be refused, not wrap.
-    const long long declared_stride = fit.model == LinearModel::PtmLrgb
-                                          ? static_cast<long long>(fit.terms()) + fit.channels
-                                          : static_cast<long long>(fit.channels) * fit.terms();
+    // In 64 bits: channels x terms past INT_MAX must be refused, not wrap.
+    const long long declared_stride = linear_fit_stride(fit.model, fit.channels);
     if (image->channels != declared_stride)
         return bad_input("'" + path + "' has " + std::to_string(image->channels) + " channels, expected " +
                          std::to_string(declared_stride) + " for a " + model_name + " fit of " +

@@ -44,6 +44,13 @@ struct LinearFitOptions {
     int threads = 0;  // 0: all cores
 };
 
+// The floats a texel of a `model` fit of `channels` channels holds (see
+// LinearFit::coefficients), in 64 bits: a file may declare any count.
+inline long long linear_fit_stride(LinearModel model, long long channels)
+{
+    return model == LinearModel::PtmLrgb ? basis_terms(model) + channels : channels * basis_terms(model);
+}
+
 struct LinearFit {
     LinearModel model = LinearModel::PtmRgb;
     int width = 0, height = 0, channels = 0;
@@ -57,7 +64,7 @@ struct LinearFit {
     std::vector<float> coefficients;
 
     int terms() const { return basis_terms(model); }
-    int stride() const { return model == LinearModel::PtmLrgb ? basis_terms(model) + channels : channels * terms(); }
+    int stride() const { return static_cast<int>(linear_fit_stride(model, channels)); }
     std::size_t texels() const { return static_cast<std::size_t>(width) * height; }
     const float* texel(std::size_t t) const { return coefficients.data() + t * stride(); }
 };
