@@ -16,7 +16,8 @@ Expected<std::vector<float>> image_rgb_texels(const ImageData& img, const std::s
     std::vector<float> rgb(static_cast<std::size_t>(count) * 3);
     for (int i = 0; i < count; ++i) {
         const int x = start_x + i * step_x, y = start_y + i * step_y;
-        const float* p = img.pixels.data() + (static_cast<std::size_t>(y) * img.width + x) * img.channels;
+        const ImageWindow& w = img.window;
+        const float* p = img.pixels.data() + (static_cast<std::size_t>(y - w.y) * w.width + (x - w.x)) * img.channels;
         for (int ch = 0; ch < 3; ++ch) {
             const float v = img.channels >= 3 ? p[ch] : p[0];
             if (!std::isfinite(v)) {
@@ -63,39 +64,43 @@ Expected<LoadedColorMap> load_color_map(const ColorMapLoadOptions& options, cons
         return bad_input("ColorMapLoadOptions::row and ColorMapLoadOptions::column were both given; pick one gradient",
                          "ColorMapLoadOptions::row");
 
-    auto image = read_image(options.path);
-    if (!image) return image.error();
-    const ImageData& img = *image;
-
-    // Which texels form the gradient.
-    int start_x = 0, start_y = 0, step_x = 1, step_y = 0, count = img.width;
+    // Which texels form the gradient, decided from the header: only they
+    // are kept of the pixels.
+    int start_x = 0, start_y = 0, step_x = 1, step_y = 0, count = 0;
     std::string selection = "row 0";
-    if (options.column || (img.width == 1 && img.height > 1 && !options.row)) {
-        const int c = options.column.value_or(0);
-        if (c < 0 || c >= img.width) {
-            std::ostringstream msg;
-            msg << "ColorMapLoadOptions::column " << c << " is outside '" << options.path << "' (expected 0.."
-                << img.width - 1 << ")";
-            return bad_input(msg.str(), "ColorMapLoadOptions::column");
+    auto choose = [&](const ImageData& img) -> Expected<ImageWindow> {
+        if (options.column || (img.width == 1 && img.height > 1 && !options.row)) {
+            const int c = options.column.value_or(0);
+            if (c < 0 || c >= img.width) {
+                std::ostringstream msg;
+                msg << "ColorMapLoadOptions::column " << c << " is outside '" << options.path << "' (expected 0.."
+                    << img.width - 1 << ")";
+                return bad_input(msg.str(), "ColorMapLoadOptions::column");
+            }
+            start_x = c, step_x = 0, step_y = 1, count = img.height;
+            selection = "column " + std::to_string(c);
+            return ImageWindow{c, 0, 1, img.height};
         }
-        start_x = c, step_x = 0, step_y = 1, count = img.height;
-        selection = "column " + std::to_string(c);
-    } else if (options.row || img.height == 1) {
-        const int r = options.row.value_or(0);
-        if (r < 0 || r >= img.height) {
-            std::ostringstream msg;
-            msg << "ColorMapLoadOptions::row " << r << " is outside '" << options.path << "' (expected 0.."
-                << img.height - 1 << ")";
-            return bad_input(msg.str(), "ColorMapLoadOptions::row");
+        if (options.row || img.height == 1) {
+            const int r = options.row.value_or(0);
+            if (r < 0 || r >= img.height) {
+                std::ostringstream msg;
+                msg << "ColorMapLoadOptions::row " << r << " is outside '" << options.path << "' (expected 0.."
+                    << img.height - 1 << ")";
+                return bad_input(msg.str(), "ColorMapLoadOptions::row");
+            }
+            start_y = r, count = img.width;
+            selection = "row " + std::to_string(r);
+            return ImageWindow{0, r, img.width, 1};
         }
-        start_y = r;
-        selection = "row " + std::to_string(r);
-    } else {
         std::ostringstream msg;
         msg << "'" << options.path << "' is " << img.width << " x " << img.height
             << "; pass --row N or --column N to pick the gradient (or use a W x 1 image)";
         return bad_input(msg.str());
-    }
+    };
+    auto image = read_image(options.path, choose);
+    if (!image) return image.error();
+    const ImageData& img = *image;
 
     auto texels = image_rgb_texels(img, options.path, start_x, start_y, step_x, step_y, count);
     if (!texels) return texels.error();

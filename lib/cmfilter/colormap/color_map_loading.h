@@ -47,7 +47,7 @@ struct LoadedColorMap {
 };
 
 // Shared by the map loaders (slope_color_map_loading.h too):
-// `count` texels of `img` from (start_x, start_y) in steps of (step_x,
+// `count` texels of `img` (within img.window) from (start_x, start_y) in steps of (step_x,
 // step_y) as interleaved RGB (grey replicated), BadInput for a non-finite
 // one;
 Expected<std::vector<float>> image_rgb_texels(const ImageData& img, const std::string& path, int start_x, int start_y,

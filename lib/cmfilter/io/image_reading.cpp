@@ -116,7 +116,43 @@ bool read_float_pixels(OIIO::ImageInput& in, int subimage, int miplevel, int chb
     return true;
 }
 
-Expected<ImageData> read_image(const std::string& path)
+namespace {
+
+// Rows [window.y, window.y + window.height) of subimage 0, level 0 of `in`,
+// all channels, as float, a strip of native rows (a row of tiles) at a time,
+// keeping columns [window.x, window.x + window.width) in `out`.
+bool read_float_window(OIIO::ImageInput& in, const ImageWindow& window, float* out)
+{
+    const OIIO::ImageSpec& spec = in.spec();
+    const std::size_t nch = static_cast<std::size_t>(spec.nchannels);
+    const std::size_t width = static_cast<std::size_t>(spec.width);
+    const int rows = native_strip_rows(spec);
+    const int first = spec.tile_width > 0 ? window.y - window.y % rows : window.y;
+    const int end = window.y + window.height;
+    std::vector<float> strip;
+    for (int y = first; y < end; y += rows) {
+        const int y1 = std::min(spec.height, y + rows);
+        strip.resize(width * static_cast<std::size_t>(y1 - y) * nch);
+        const bool read = spec.tile_width > 0 ? in.read_tiles(0, 0, spec.x, spec.x + spec.width, spec.y + y,
+                                                              spec.y + y1, spec.z, spec.z + std::max(spec.depth, 1), 0,
+                                                              spec.nchannels, OIIO::TypeDesc::FLOAT, strip.data())
+                                              : in.read_scanlines(0, 0, spec.y + y, spec.y + y1, spec.z, 0,
+                                                                  spec.nchannels, OIIO::TypeDesc::FLOAT, strip.data());
+        if (!read) return false;
+        for (int row = std::max(y, window.y); row < std::min(y1, end); ++row) {
+            const float* src = strip.data() + (static_cast<std::size_t>(row - y) * width + window.x) * nch;
+            std::copy_n(src, static_cast<std::size_t>(window.width) * nch,
+                        out + static_cast<std::size_t>(row - window.y) * window.width * nch);
+        }
+    }
+    return true;
+}
+
+}  // namespace
+
+Expected<ImageData> read_image(const std::string& path) { return read_image(path, nullptr); }
+
+Expected<ImageData> read_image(const std::string& path, const ImageWindowChoice& choose)
 {
     auto opened = open_image_input(path);
     if (!opened) return opened.error();
@@ -146,8 +182,25 @@ Expected<ImageData> read_image(const std::string& path)
     img.oiio_colorspace = spec.get_string_attribute("oiio:ColorSpace");
     img.gamma_attr = spec.get_float_attribute("oiio:Gamma", 0.0f);
     if (auto fits = check_image_allocation(spec, path, img.channels); !fits) return fits.error();
-    img.pixels.resize(static_cast<std::size_t>(img.width) * img.height * img.channels);
-    if (!read_float_pixels(*in, 0, 0, 0, img.channels, img.pixels.data())) {
+    img.window = {0, 0, img.width, img.height};
+    if (choose) {
+        auto window = choose(img);
+        if (!window) return window.error();
+        const ImageWindow& w = *window;
+        if (w.x < 0 || w.y < 0 || w.width <= 0 || w.height <= 0 || w.width > img.width - w.x ||
+            w.height > img.height - w.y) {
+            std::ostringstream msg;
+            msg << "window " << w.width << " x " << w.height << " at (" << w.x << ", " << w.y << ") is outside '"
+                << path << "' (" << img.width << " x " << img.height << ")";
+            return bad_input(msg.str(), "ImageWindow");
+        }
+        img.window = w;
+    }
+    const ImageWindow& w = img.window;
+    img.pixels.resize(static_cast<std::size_t>(w.width) * w.height * img.channels);
+    const bool whole = w.width == img.width && w.height == img.height;
+    if (!(whole ? read_float_pixels(*in, 0, 0, 0, img.channels, img.pixels.data())
+                : read_float_window(*in, w, img.pixels.data()))) {
         std::string why = in->geterror();
         return io_error("cannot read the pixels of '" + path + "': " + why);
     }

@@ -8,21 +8,34 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
 namespace cmfilter {
 
+// A rectangle of an image's pixels, from the top-left of its data window.
+struct ImageWindow {
+    int x = 0;
+    int y = 0;
+    int width = 0;
+    int height = 0;
+};
+
 struct ImageData {
     int width = 0;
     int height = 0;
     int channels = 0;
     std::vector<std::string> channel_names;
-    std::vector<float> pixels;  // width * height * channels, row-major, top row first
-    std::string format;         // OpenImageIO format name ("png", "openexr", ...)
-    std::string pixel_type;     // stored type ("uint8", "half", "float", ...)
-    bool is_float = false;      // stored as half/float/double
+    // The pixels read (ImageData::window: all of them unless a reader asked
+    // for less): window.width * window.height * channels, row-major, top row
+    // first.
+    ImageWindow window;
+    std::vector<float> pixels;
+    std::string format;      // OpenImageIO format name ("png", "openexr", ...)
+    std::string pixel_type;  // stored type ("uint8", "half", "float", ...)
+    bool is_float = false;   // stored as half/float/double
     // The colour space the file declares: "colorInteropID", else the
     // "cmfilter:linear_space" cmfilter's own files record, else the interop
     // ID of OpenEXR's "chromaticities" when they are a known space's
@@ -35,6 +48,18 @@ struct ImageData {
 // Refuses (BadInput, before reading pixels) an image whose float pixels do
 // not fit in what this process may allocate (check_image_allocation).
 Expected<ImageData> read_image(const std::string& path);
+
+// What a reader keeps of an image, chosen from its header (an ImageData
+// without pixels): a window of it, or an error that refuses the image
+// before any pixel is read.
+using ImageWindowChoice = std::function<Expected<ImageWindow>(const ImageData& header)>;
+
+// read_image keeping only the window `choose` returns: it holds the window
+// and a strip of rows (native_strip_rows) at a time. The image is refused by
+// the same size check as a whole read (check_image_allocation), before the
+// window is chosen: every column of the window's rows is decoded, and
+// sequential formats (PNG, JPEG) decode the rows above it too.
+Expected<ImageData> read_image(const std::string& path, const ImageWindowChoice& choose);
 
 // Reads channels [chbegin, chend) of subimage `subimage`, MIP level
 // `miplevel` of `in` as float into `out` (width x height x channels, top row

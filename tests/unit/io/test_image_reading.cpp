@@ -3,8 +3,9 @@
 // native strips and converts them itself, against OpenImageIO's own float
 // conversion (ImageBuf::get_pixels): 8-bit, 16-bit, half and float images
 // spanning several strips, channel subsets, and an EXR whose channels have
-// different types. Bit-identical results are expected: both convert with
-// OpenImageIO's convert_pixel_values.
+// different types; windows of scanline and tiled images (read_image with a
+// window) against ImageBuf::get_pixels of the same rectangle. Bit-identical
+// results are expected: both convert with OpenImageIO's convert_pixel_values.
 #include "cmfilter/io/image_reading.h"
 
 #include "test_images.h"
@@ -130,4 +131,66 @@ TEST_CASE("an EXR whose channels have different types reads each channel as Open
     CHECK(same_bits(cmfilter_float_pixels(path, 0, 3), oiio_float_pixels(path, 0, 3)));
     CHECK(same_bits(cmfilter_float_pixels(path, 1, 3), oiio_float_pixels(path, 1, 3)));
     CHECK(same_bits(cmfilter_float_pixels(path, 2, 3), oiio_float_pixels(path, 2, 3)));
+}
+
+TEST_CASE("a window of a scanline or tiled image reads as OpenImageIO converts that rectangle")
+{
+    struct Case {
+        const char* name;
+        OIIO::TypeDesc type;
+        int width, height, channels, tile;
+    };
+    // The TIFF spans several strips; the EXR's 32 x 32 tiles do not divide it.
+    const Case cases[] = {{"window.tif", OIIO::TypeDesc::UINT16, 9000, 800, 2, 0},
+                          {"window.exr", OIIO::TypeDesc::HALF, 150, 100, 3, 32}};
+    // Rectangles: a row, a column, one inside tiles and strips, the whole image.
+    for (const Case& c : cases) {
+        CAPTURE(c.name);
+        OIIO::ImageSpec spec(c.width, c.height, c.channels, c.type);
+        spec.tile_width = spec.tile_height = c.tile;
+        auto data = pattern(spec.image_bytes());
+        if (c.type == OIIO::TypeDesc::HALF) {
+            std::vector<float> f(spec.image_pixels() * std::size_t(c.channels));
+            for (std::size_t i = 0; i < f.size(); ++i) f[i] = float(data[i]) / 7.0f - 10.0f;
+            OIIO::convert_pixel_values(OIIO::TypeDesc::FLOAT, f.data(), c.type, data.data(), int(f.size()));
+        }
+        const std::string path = kDir + "/" + c.name;
+        auto out = OIIO::ImageOutput::create(path);
+        REQUIRE(out);
+        REQUIRE(out->open(path, spec));
+        REQUIRE(out->write_image(c.type, data.data()));
+        REQUIRE(out->close());
+        OIIO::ImageBuf buf(path);
+        REQUIRE(buf.read(0, 0, true, OIIO::TypeDesc::FLOAT));
+        const ImageWindow windows[] = {{0, c.height - 1, c.width, 1},
+                                       {c.width / 3, 0, 1, c.height},
+                                       {37, c.height / 2 - 5, c.width / 2, 41},
+                                       {0, 0, c.width, c.height}};
+        for (const ImageWindow& w : windows) {
+            CAPTURE(w.x);
+            CAPTURE(w.y);
+            CAPTURE(w.width);
+            CAPTURE(w.height);
+            auto img = read_image(path, [&](const ImageData& header) -> Expected<ImageWindow> {
+                CHECK(header.pixels.empty());
+                return w;
+            });
+            REQUIRE(img);
+            CHECK(img->width == c.width);
+            CHECK(img->window.width == w.width);
+            const OIIO::ROI roi(w.x, w.x + w.width, w.y, w.y + w.height, 0, 1, 0, c.channels);
+            std::vector<float> expected(roi.npixels() * std::size_t(c.channels));
+            REQUIRE(buf.get_pixels(roi, OIIO::TypeDesc::FLOAT, expected.data()));
+            CHECK(same_bits(img->pixels, expected));
+        }
+        // A window beyond the image, or a refusal, reads nothing.
+        auto outside = read_image(path, [&](const ImageData&) -> Expected<ImageWindow> {
+            return ImageWindow{c.width - 1, 0, 2, 1};
+        });
+        REQUIRE_FALSE(outside);
+        CHECK(outside.error().message.find("is outside") != std::string::npos);
+        auto refused = read_image(path, [](const ImageData&) -> Expected<ImageWindow> { return bad_input("no"); });
+        REQUIRE_FALSE(refused);
+        CHECK(refused.error().message == "no");
+    }
 }
