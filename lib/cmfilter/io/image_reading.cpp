@@ -70,26 +70,27 @@ Status check_image_allocation(const OIIO::ImageSpec& spec, const std::string& pa
                                        (channels == 1 ? " channel)" : " channels)"));
 }
 
-bool read_float_pixels(OIIO::ImageInput& in, int subimage, int miplevel, int chbegin, int chend, float* out)
+namespace {
+
+// Rows [y_begin, y_end) of a scanline image's subimage `subimage`, MIP level
+// `miplevel`, channels [chbegin, chend) as float into `out` (the rows' full
+// width), in native strips of native_strip_rows rows converted here: asked
+// for float, OpenImageIO 2.4's read_scanlines converts through a buffer of
+// about 64 MB (more for a large "tiff:RowsPerStrip"), whatever the image's
+// size, allocated on every call.
+bool read_float_scanlines(OIIO::ImageInput& in, const OIIO::ImageSpec& spec, int subimage, int miplevel, int chbegin,
+                          int chend, int y_begin, int y_end, float* out)
 {
-    const OIIO::ImageSpec spec = in.spec(subimage, miplevel);
-    // Tiled images are read a row of tiles at a time by the library itself
-    // (its read_scanlines would divide by a strip height of 0 on them).
-    if (spec.tile_width > 0) return in.read_image(subimage, miplevel, chbegin, chend, OIIO::TypeDesc::FLOAT, out);
-    // Scanline images: native strips of our own, converted here. Asked for
-    // float, OpenImageIO 2.4's read_scanlines converts through a buffer of
-    // about 64 MB (more for a large "tiff:RowsPerStrip"), whatever the
-    // image's size, allocated on every call.
     const int nch = chend - chbegin;
     const std::size_t width = static_cast<std::size_t>(spec.width);
     const std::size_t out_row = width * static_cast<std::size_t>(nch);
     const int rows = native_strip_rows(spec);
     const bool uniform = spec.channelformats.empty();
     std::vector<char> strip;
-    for (int y = 0; y < spec.height; y += rows) {
-        const int end = std::min(spec.height, y + rows);
+    for (int y = y_begin; y < y_end; y += rows) {
+        const int end = std::min(y_end, y + rows);
         const int h = end - y;
-        float* dst = out + static_cast<std::size_t>(y) * out_row;
+        float* dst = out + static_cast<std::size_t>(y - y_begin) * out_row;
         if (uniform && spec.format == OIIO::TypeDesc::FLOAT) {
             if (!in.read_scanlines(subimage, miplevel, spec.y + y, spec.y + end, 0, chbegin, chend,
                                    OIIO::TypeDesc::UNKNOWN, dst))
@@ -116,28 +117,30 @@ bool read_float_pixels(OIIO::ImageInput& in, int subimage, int miplevel, int chb
     return true;
 }
 
-namespace {
-
 // Rows [window.y, window.y + window.height) of subimage 0, level 0 of `in`,
 // all channels, as float, a strip of native rows (a row of tiles) at a time,
 // keeping columns [window.x, window.x + window.width) in `out`.
 bool read_float_window(OIIO::ImageInput& in, const ImageWindow& window, float* out)
 {
-    const OIIO::ImageSpec& spec = in.spec();
-    const std::size_t nch = static_cast<std::size_t>(spec.nchannels);
+    const OIIO::ImageSpec spec = in.spec(0, 0);
+    const int nch = spec.nchannels;
     const std::size_t width = static_cast<std::size_t>(spec.width);
+    const int end = window.y + window.height;
+    // The whole width of a scanline image: straight into `out`.
+    if (spec.tile_width <= 0 && window.x == 0 && window.width == spec.width)
+        return read_float_scanlines(in, spec, 0, 0, 0, nch, window.y, end, out);
     const int rows = native_strip_rows(spec);
     const int first = spec.tile_width > 0 ? window.y - window.y % rows : window.y;
-    const int end = window.y + window.height;
     std::vector<float> strip;
     for (int y = first; y < end; y += rows) {
         const int y1 = std::min(spec.height, y + rows);
-        strip.resize(width * static_cast<std::size_t>(y1 - y) * nch);
+        strip.resize(width * static_cast<std::size_t>(y1 - y) * static_cast<std::size_t>(nch));
+        // Tiled images: a row of tiles, read and converted by the library
+        // itself (its read_scanlines would divide by a strip height of 0).
         const bool read = spec.tile_width > 0 ? in.read_tiles(0, 0, spec.x, spec.x + spec.width, spec.y + y,
                                                               spec.y + y1, spec.z, spec.z + std::max(spec.depth, 1), 0,
-                                                              spec.nchannels, OIIO::TypeDesc::FLOAT, strip.data())
-                                              : in.read_scanlines(0, 0, spec.y + y, spec.y + y1, spec.z, 0,
-                                                                  spec.nchannels, OIIO::TypeDesc::FLOAT, strip.data());
+                                                              nch, OIIO::TypeDesc::FLOAT, strip.data())
+                                              : read_float_scanlines(in, spec, 0, 0, 0, nch, y, y1, strip.data());
         if (!read) return false;
         for (int row = std::max(y, window.y); row < std::min(y1, end); ++row) {
             const float* src = strip.data() + (static_cast<std::size_t>(row - y) * width + window.x) * nch;
@@ -149,6 +152,15 @@ bool read_float_window(OIIO::ImageInput& in, const ImageWindow& window, float* o
 }
 
 }  // namespace
+
+bool read_float_pixels(OIIO::ImageInput& in, int subimage, int miplevel, int chbegin, int chend, float* out)
+{
+    const OIIO::ImageSpec spec = in.spec(subimage, miplevel);
+    // Tiled images are read a row of tiles at a time by the library itself
+    // (its read_scanlines would divide by a strip height of 0 on them).
+    if (spec.tile_width > 0) return in.read_image(subimage, miplevel, chbegin, chend, OIIO::TypeDesc::FLOAT, out);
+    return read_float_scanlines(in, spec, subimage, miplevel, chbegin, chend, 0, spec.height, out);
+}
 
 Expected<ImageData> read_image(const std::string& path) { return read_image(path, nullptr); }
 
