@@ -23,8 +23,9 @@ packages=(g++ make cmake pkg-config
 # The tests: python3-jsonschema validates every command's --json against docs/cmfilter.schema.json.
 [ "$mode" = example ] || packages+=(python3-jsonschema)
 # The checked builds: clang with its sanitizer and libFuzzer runtimes, and
-# llvm-symbolizer for their reports.
-[ "$mode" = example ] || packages+=(clang libclang-rt-14-dev llvm)
+# llvm-symbolizer for their reports; munge and Slurm for the farm example's
+# test, which stands up a single-node cluster of its own (docs/farm.md).
+[ "$mode" = example ] || packages+=(clang libclang-rt-14-dev llvm munge slurm-wlm)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

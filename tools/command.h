@@ -13,6 +13,7 @@
 #include "cmfilter/io/exr_output_options.h"
 #include "cmfilter/io/rgb_image_file.h"
 #include "cmfilter/math/vec3.h"
+#include "cmfilter/render/pixel_region.h"
 #include "cmfilter/synthesis/sample_analysis.h"
 #include "cmfilter/util/error.h"
 
@@ -78,6 +79,11 @@ Expected<std::pair<int, int>> parse_size(const std::string& option, const std::s
 // parse_size within a scene's limits (kMaxImageSide a side, kMaxImagePixels
 // in all): render --size and bench --size, which replace a scene's resolution.
 Expected<std::pair<int, int>> parse_image_size(const std::string& option, const std::string& text);
+
+// "x0,y0,x1,y1": four integers >= 0 (render --region, bench --region);
+// BadInput naming the option and the text otherwise. Whether the region
+// lies in a frame is check_pixel_region's to say.
+Expected<PixelRegion> parse_region(const std::string& option, const std::string& text);
 
 // "x,y,z": a direction, normalised; BadInput naming the option unless three
 // finite numbers, nonzero, with z >= 0 (at or above the horizon).

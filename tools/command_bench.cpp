@@ -2,12 +2,17 @@
 // cmfilter bench: speed against accuracy on scenes (docs/render.md): every
 // method and configuration timed and compared with a reference (1024 rays
 // per pixel, more where two references with other seeds differ by > 0.2),
-// overall and per distance band; a CSV, and a log-log chart per scene.
+// overall and per distance band; a CSV, and a log-log chart per scene; with
+// --references the reference of each scene as an EXR; with --region all of
+// it on a region of each frame (docs/farm.md).
 #include "command.h"
 
 #include "bench/bench_chart.h"
 #include "bench/render_benchmark.h"
+#include "cmfilter/io/recorded_path.h"
+#include "cmfilter/io/rgb_image_file.h"
 #include "cmfilter/util/atomic_output.h"
+#include "cmfilter/util/version.h"
 #include "cmfilter/scene/scene_loading.h"
 
 #include <cmath>
@@ -27,6 +32,8 @@ struct BenchArgs {
     std::string csv;
     std::string charts;
     std::string resolution;
+    std::string region;      // x0,y0,x1,y1 of every scene's frame (after --size)
+    std::string references;  // folder for SCENE.reference.exr
     int reference_samples = kReferenceSamples;
     double reference_repeat = 0.2;
     int max_reference_samples = 16 * kReferenceSamples;
@@ -53,11 +60,41 @@ Status write_text(const std::string& path, const std::string& text)
     return out->commit();
 }
 
+// The reference of `scene_path` in the --references folder.
+std::string reference_path(const std::string& folder, const std::string& scene_path)
+{
+    return (std::filesystem::path(folder) / (std::filesystem::path(scene_path).stem().string() + ".reference.exr"))
+        .string();
+}
+
+// The reference the rows were measured against, scene-linear, its region as
+// the data window (as render writes it).
+Status write_reference(const std::string& path, const SceneBench& bench, const BenchOptions& options,
+                       const ColorConfig& config)
+{
+    const RenderedImage& image = *bench.reference_image;
+    ImageAttributes a;
+    a.text = {{"cmfilter:kind", "render"},
+              {"cmfilter:version", version()},
+              {"cmfilter:scene", path_for_record(bench.scene, path)},
+              {"cmfilter:method", to_string(RenderMethod::Reference)}};
+    a.numbers = {{"cmfilter:samples", static_cast<double>(image.samples)},
+                 {"cmfilter:seed", static_cast<double>(options.seed)}};
+    return write_rgb_image(path, image.width, image.height, 3, image.rgb, config.scene_linear_name(), a, config,
+                           {image.x0, image.y0, image.frame_width, image.frame_height});
+}
+
 Status run(const BenchArgs& args)
 {
     if (auto st = check_output_path(args.csv, ".csv"); !st) return st;
     if (!args.charts.empty() && !std::filesystem::is_directory(args.charts))
         return io_error("--charts '" + args.charts + "' is not a folder");
+    if (!args.references.empty()) {
+        if (!std::filesystem::is_directory(args.references))
+            return io_error("--references '" + args.references + "' is not a folder");
+        for (const std::string& path : args.scenes)
+            if (auto st = check_rgb_image_output(reference_path(args.references, path), true); !st) return st;
+    }
     BenchOptions options;
     options.reference_samples = args.reference_samples;
     options.reference_repeat = args.reference_repeat;
@@ -69,6 +106,12 @@ Status run(const BenchArgs& args)
         if (!parsed) return parsed.error();
         size = *parsed;
     }
+    if (!args.region.empty()) {
+        auto parsed = parse_region("--region", args.region);
+        if (!parsed) return parsed.error();
+        options.region = *parsed;
+    }
+    options.keep_reference = !args.references.empty();
     auto config = load_color_config(args.ocio_config);
     if (!config) return config.error();
 
@@ -93,6 +136,12 @@ Status run(const BenchArgs& args)
             scene->camera.width = size->first;
             scene->camera.height = size->second;
         }
+        // Checked before the materials are prepared (their tables may take a while).
+        if (options.region)
+            if (auto st = check_pixel_region(*options.region, scene->camera.width, scene->camera.height,
+                                             "BenchOptions::region");
+                !st)
+                return prefixed(scene->path + ": ", st.error());
         MaterialOptions mo;
         mo.threads = args.threads;
         mo.note = options.note;
@@ -105,6 +154,12 @@ Status run(const BenchArgs& args)
                 (std::filesystem::path(args.charts) / (std::filesystem::path(path).stem().string() + ".png")).string();
             if (auto st = write_bench_chart(*bench, png); !st) return st;
             if (!args.quiet) std::cerr << "bench: wrote " << png << "\n";
+        }
+        if (!args.references.empty()) {
+            const std::string exr = reference_path(args.references, path);
+            if (auto st = write_reference(exr, *bench, options, *config); !st) return st;
+            bench->reference_image.reset();
+            if (!args.quiet) std::cerr << "bench: wrote " << exr << "\n";
         }
         benches.push_back(std::move(*bench));
     }
@@ -124,6 +179,12 @@ Command setup_bench(CLI::App& parent)
     app->add_option("--csv", args->csv, "CSV to write: one row per scene and configuration")->required();
     app->add_option("--charts", args->charts, "Folder for one chart per scene (SCENE.png; needs gnuplot)");
     app->add_option("--size,--resolution", args->resolution, "Render every scene at WxH instead of its own resolution");
+    app->add_option("--region", args->region,
+                    "Render and compare only the pixels x0,y0,x1,y1 of every scene's frame (after --size; x0,y0 "
+                    "inclusive, x1,y1 exclusive; docs/farm.md)");
+    app->add_option("--references", args->references,
+                    "Folder for each scene's reference as SCENE.reference.exr (scene-linear; a --region as its "
+                    "data window)");
     app->add_option("--reference-spp", args->reference_samples, "Rays per pixel of each reference round (>= 1024)")
         ->capture_default_str();
     app->add_option("--reference-repeat", args->reference_repeat,
@@ -151,7 +212,8 @@ Command setup_bench(CLI::App& parent)
     FieldFlags flags = color_map_flags();
     flags.insert(flags.end(), {{"BenchOptions::reference_samples", "--reference-spp"},
                                {"BenchOptions::reference_repeat", "--reference-repeat"},
-                               {"BenchOptions::max_reference_samples", "--max-reference-spp"}});
+                               {"BenchOptions::max_reference_samples", "--max-reference-spp"},
+                               {"BenchOptions::region", "--region"}});
     return {app, [args] { return run(*args); }, flags};
 }
 

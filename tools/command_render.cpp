@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // cmfilter render: a scene file (docs/scene-format.md) rendered with one
 // filtering method (docs/render.md): scene-linear EXR or sRGB PNG/JPEG, and
-// with --aov the per-pixel filtered mean, sigma and LOD as float EXRs.
+// with --aov the per-pixel filtered mean, sigma and LOD as float EXRs; with
+// --region only a region of the frame, as EXR data windows (docs/farm.md).
 #include "command.h"
 
 #include "cmfilter/render/render.h"
@@ -10,6 +11,7 @@
 #include "cmfilter/scene/scene_loading.h"
 #include "cmfilter/scene/tolerance_tables.h"
 #include "cmfilter/tables/table_size_search.h"
+#include "cmfilter/util/atomic_output.h"
 #include "cmfilter/util/version.h"
 
 #include <nlohmann/json.hpp>
@@ -41,7 +43,8 @@ struct RenderArgs {
     std::uint64_t seed = 0;
     std::string footprint = "rms";
     std::string aov;
-    std::string size;  // WxH replacing the scene's camera resolution
+    std::string size;    // WxH replacing the scene's camera resolution
+    std::string region;  // x0,y0,x1,y1 of the frame (after --size)
     std::optional<double> tolerance;
     std::optional<double> shortcut;
     std::string ocio_config;
@@ -50,12 +53,19 @@ struct RenderArgs {
     bool quiet = false;
 };
 
+// Where the image's pixels lie in the frame: its data window (a region) in
+// the frame's display window.
+FramePlacement frame_placement(const RenderedImage& image)
+{
+    return {image.x0, image.y0, image.frame_width, image.frame_height};
+}
+
 Status write_aov(const std::string& path, const RenderedImage& image, const std::vector<float>& values,
                  const std::string& name, const ColorConfig& config)
 {
     ImageAttributes a;
     a.text = {{"cmfilter:kind", "render-aov"}, {"cmfilter:aov", name}, {"cmfilter:version", version()}};
-    return write_rgb_image(path, image.width, image.height, 1, values, "", a, config);
+    return write_rgb_image(path, image.width, image.height, 1, values, "", a, config, frame_placement(image));
 }
 
 // "surface 0: 128 x 8 sqrt table, 12288 bytes (1.56% of 256 x 256); ..."
@@ -133,11 +143,25 @@ Status run(const RenderArgs& args)
         if (!parsed) return parsed.error();
         size = *parsed;
     }
+    // A region is written as an OpenEXR data window inside the frame's
+    // display window, which PNG and JPEG cannot hold.
+    std::optional<PixelRegion> region;
+    if (!args.region.empty()) {
+        if (lowercase_extension(args.output) != ".exr")
+            return bad_input("--region '" + args.region + "' needs an OpenEXR output (expected -o ending in .exr, " +
+                             "whose data window places the region in the frame; got '" + args.output + "')");
+        auto parsed = parse_region("--region", args.region);
+        if (!parsed) return parsed.error();
+        region = *parsed;
+    }
     auto scene = load_scene(args.scene);
     if (!scene) return scene.error();
     // A preview at another size: the same camera and field of view (vertical),
     // so a different aspect ratio shows more or less to the sides.
     if (size) std::tie(scene->camera.width, scene->camera.height) = *size;
+    // Checked before the materials are prepared (their tables may take a while).
+    if (region)
+        if (auto st = check_pixel_region(*region, scene->camera.width, scene->camera.height); !st) return st;
     auto config = load_color_config(args.ocio_config);
     if (!config) return config.error();
 
@@ -163,6 +187,7 @@ Status run(const RenderArgs& args)
     options.masking = args.masking == "correlated" ? MaskingShadowing::DirectionCorrelated
                                                    : MaskingShadowing::Uncorrelated;
     options.slope_shading = args.slope_shading == "correlated" ? SlopeShading::Correlated : SlopeShading::Uncorrelated;
+    options.region = region;
     if (talk && isatty(STDERR_FILENO)) options.progress = terminal_progress("render");
     auto image = render(*scene, *materials, options);
     if (!image) return image.error();
@@ -176,7 +201,7 @@ Status run(const RenderArgs& args)
     a.numbers = {{"cmfilter:samples", static_cast<double>(image->samples)},
                  {"cmfilter:seed", static_cast<double>(args.seed)}};
     if (auto st = write_rgb_image(args.output, image->width, image->height, 3, image->rgb, config->scene_linear_name(),
-                                  a, *config);
+                                  a, *config, frame_placement(*image));
         !st)
         return st;
     if (!args.aov.empty()) {
@@ -187,7 +212,7 @@ Status run(const RenderArgs& args)
             // The ray-traced microsurfaces, fully shaded (render.h).
             a.text.push_back({"cmfilter:aov", "shaded"});
             if (auto st = write_rgb_image(shaded_path, image->width, image->height, 3, image->shaded,
-                                          config->scene_linear_name(), a, *config);
+                                          config->scene_linear_name(), a, *config, frame_placement(*image));
                 !st)
                 return st;
         }
@@ -207,7 +232,9 @@ Status run(const RenderArgs& args)
         j["slope_shading"] = args.slope_shading;
         j["edge_coverage"] = options.edge_coverage && *method != RenderMethod::Supersample &&
                              *method != RenderMethod::Reference;
-        j["size"] = {image->width, image->height};
+        j["size"] = {image->frame_width, image->frame_height};
+        // The pixels computed and written (the whole frame without --region).
+        j["region"] = {image->x0, image->y0, image->x0 + image->width, image->y0 + image->height};
         j["pixels_hit"] = hits;
         j["seconds"] = image->seconds;
         j["tables"] = nlohmann::json::array();
@@ -220,9 +247,12 @@ Status run(const RenderArgs& args)
         }
         print_json("render", std::move(j));
     } else if (!args.quiet) {
-        std::cout << "wrote " << args.output << ": " << image->width << " x " << image->height << ", "
-                  << to_string(image->method) << ", " << image->samples << " ray(s) per pixel, " << hits
-                  << " pixels on a surface, " << image->seconds << " s\n";
+        std::cout << "wrote " << args.output << ": ";
+        if (region)
+            std::cout << "region " << to_string(*region) << " (" << image->width << " x " << image->height << ") of ";
+        std::cout << image->frame_width << " x " << image->frame_height << ", " << to_string(image->method) << ", "
+                  << image->samples << " ray(s) per pixel, " << hits << " pixels on a surface, " << image->seconds
+                  << " s\n";
         if (image->method == RenderMethod::Gaussian) {
             for (std::size_t i = 0; i < materials->size(); ++i)
                 std::cout << "  " << describe_table(i, table_layer((*materials)[i])) << "\n";
@@ -248,6 +278,10 @@ Command setup_render(CLI::App& parent)
     app->add_option("--size,--resolution", args->size,
                     "Render at WxH instead of the scene's camera resolution (the same camera and vertical field "
                     "of view)");
+    app->add_option("--region", args->region,
+                    "Render only the pixels x0,y0,x1,y1 of the frame (after --size; x0,y0 inclusive, x1,y1 "
+                    "exclusive), each exactly as the whole frame's render has it, written as an OpenEXR data "
+                    "window in the frame (docs/farm.md)");
     app->add_option("--spp", args->samples, "Rays per pixel for supersample (reference: at least 1024)")
         ->capture_default_str();
     app->add_option("--seed", args->seed, "Seed of the sub-pixel samples")->capture_default_str();
@@ -284,7 +318,9 @@ Command setup_render(CLI::App& parent)
     app->add_option("--threads", args->threads, "Threads (0: all cores)")->capture_default_str();
     app->add_flag("--json", args->json, "Print a machine-readable summary on stdout");
     app->add_flag("-q,--quiet", args->quiet, "Print nothing on success (and no progress)");
-    return {app, [args] { return run(*args); }, color_map_flags()};
+    FieldFlags flags = color_map_flags();
+    flags.push_back({"RenderOptions::region", "--region"});
+    return {app, [args] { return run(*args); }, flags};
 }
 
 }  // namespace cmfilter::cli

@@ -52,3 +52,15 @@ set_tests_properties(cli.bench.only-rows PROPERTIES FIXTURES_REQUIRED bench_only
 cmfilter_cli_case(NAME bench.bad.charts-folder EXIT 2 STDERR "--charts '.*no-such-dir' is not a folder"
                   ABSENT ${OUT}/bench-bad.csv
                   COMMAND ${CMF} bench ${SC}/good.json --csv ${OUT}/bench-bad.csv --charts ${OUT}/no-such-dir)
+# --region (docs/farm.md): refused as render refuses it; --references must
+# be a folder. Regions of bench's references stitched: tests/cli/farm.cmake.
+cmfilter_cli_case(NAME bench.bad.region-outside EXIT 3
+                  STDERR "good\\.json: --region 0,0,40,18 lies outside the frame \\(expected .* in the 32 x 18 frame"
+                  ABSENT ${OUT}/bench-bad.csv
+                  COMMAND ${CMF} bench ${SC}/good.json --csv ${OUT}/bench-bad.csv --region 0,0,40,18)
+cmfilter_cli_case(NAME bench.bad.region-malformed EXIT 3 STDERR "--region '0;0;8;8' is not a region"
+                  ABSENT ${OUT}/bench-bad.csv
+                  COMMAND ${CMF} bench ${SC}/good.json --csv ${OUT}/bench-bad.csv --region "0;0;8;8")
+cmfilter_cli_case(NAME bench.bad.references-folder EXIT 2 STDERR "--references '.*no-such-dir' is not a folder"
+                  ABSENT ${OUT}/bench-bad.csv
+                  COMMAND ${CMF} bench ${SC}/good.json --csv ${OUT}/bench-bad.csv --references ${OUT}/no-such-dir)

@@ -217,3 +217,35 @@ foreach(method gaussian supersample)
   add_test(NAME cli.render.slope-${method}-finite COMMAND bash ${CHECK_FINITE} ${OIIOTOOL} ${SO} 24 16 --nonnegative)
   set_tests_properties(cli.render.slope-${method}-finite PROPERTIES FIXTURES_REQUIRED render_slope_${method} LABELS cli)
 endforeach()
+
+# --region x0,y0,x1,y1 (docs/farm.md): malformed, empty, outside the frame
+# (also the frame --size gives) and a PNG output are refused, naming
+# --region, the value and what is expected, and write nothing. Regions
+# stitched into the whole frame: tests/cli/farm.cmake.
+set(RR ${OUT}/render-bad-region.exr)
+cmfilter_cli_case(NAME render.bad.region-malformed EXIT 3
+                  STDERR "--region '1,2,3' is not a region \\(expected x0,y0,x1,y1: four integers >= 0, pixel coordinates of the whole frame, x0,y0 inclusive, x1,y1 exclusive\\)"
+                  ABSENT ${RR} COMMAND ${CMF} render ${SC}/good.json --region 1,2,3 -o ${RR})
+cmfilter_cli_case(NAME render.bad.region-not-numbers EXIT 3 STDERR "--region '0,0,8,x' is not a region"
+                  ABSENT ${RR} COMMAND ${CMF} render ${SC}/good.json --region 0,0,8,x -o ${RR})
+cmfilter_cli_case(NAME render.bad.region-negative EXIT 3 STDERR "--region '-4,0,8,8' is not a region"
+                  ABSENT ${RR} COMMAND ${CMF} render ${SC}/good.json --region=-4,0,8,8 -o ${RR})
+cmfilter_cli_case(NAME render.bad.region-empty EXIT 3
+                  STDERR "--region 4,2,4,9 is empty \\(expected x0,y0 inclusive, x1,y1 exclusive, in the 32 x 18 frame: 0 <= x0 < x1 <= 32 and 0 <= y0 < y1 <= 18\\)"
+                  ABSENT ${RR} COMMAND ${CMF} render ${SC}/good.json --region 4,2,4,9 -o ${RR})
+cmfilter_cli_case(NAME render.bad.region-outside EXIT 3
+                  STDERR "--region 16,0,33,18 lies outside the frame \\(expected x0,y0 inclusive, x1,y1 exclusive, in the 32 x 18 frame"
+                  ABSENT ${RR} COMMAND ${CMF} render ${SC}/good.json --region 16,0,33,18 -o ${RR})
+cmfilter_cli_case(NAME render.bad.region-outside-size EXIT 3
+                  STDERR "--region 0,0,32,18 lies outside the frame \\(expected .* in the 16 x 9 frame"
+                  ABSENT ${RR} COMMAND ${CMF} render ${SC}/good.json --size 16x9 --region 0,0,32,18 -o ${RR})
+cmfilter_cli_case(NAME render.bad.region-png EXIT 3
+                  STDERR "--region '0,0,8,8' needs an OpenEXR output \\(expected -o ending in \\.exr, whose data window places the region in the frame; got '.*render-bad-region\\.png'\\)"
+                  ABSENT ${OUT}/render-bad-region.png
+                  COMMAND ${CMF} render ${SC}/good.json --region 0,0,8,8 -o ${OUT}/render-bad-region.png)
+cmfilter_cli_case(NAME render.bad.region-aov EXIT 3 STDERR "--region 0,0,8,19 lies outside the frame"
+                  ABSENT ${RR} ${OUT}/render-bad-region-aov.mean.exr
+                  COMMAND ${CMF} render ${SC}/good.json --region 0,0,8,19 -o ${RR} --aov ${OUT}/render-bad-region-aov)
+# A region's summary: the region and its size within the frame.
+cmfilter_cli_case(NAME render.region EXIT 0 STDOUT "region 3,2,19,11 \\(16 x 9\\) of 32 x 18, gaussian, 1 ray"
+                  COMMAND ${CMF} render ${SC}/good.json --region 3,2,19,11 -o ${OUT}/render-region.exr)

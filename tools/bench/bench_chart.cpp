@@ -47,9 +47,13 @@ std::string bench_chart_script(const SceneBench& bench, const std::string& data_
     s << "set terminal pngcairo size 900,760 font 'sans,11'\n"
       << "set output " << quoted(png_path) << "\n"
       << "set title "
-      << quoted(std::filesystem::path(bench.scene).filename().string() + ", " + std::to_string(bench.width) + " x " +
-                std::to_string(bench.height) + ": error against a " + std::to_string(bench.reference_samples) +
-                "-ray reference (two agree to " + fixed(bench.reference_repeatability.all.mean, 2) + ")")
+      << quoted(std::filesystem::path(bench.scene).filename().string() + ", " +
+                (bench.region == whole_frame(bench.width, bench.height)
+                     ? ""
+                     : "region " + to_string(bench.region) + " of ") +
+                std::to_string(bench.width) + " x " + std::to_string(bench.height) + ": error against a " +
+                std::to_string(bench.reference_samples) + "-ray reference (two agree to " +
+                fixed(bench.reference_repeatability.all.mean, 2) + ")")
       << " noenhanced\n"
       << "set xrange [*:" << 2 * bench.reference_seconds << "]\n"
       << "set logscale xy\nset grid\nset bmargin 9\nset key outside below center horizontal maxcols 2 box noenhanced font 'sans,10'\n"

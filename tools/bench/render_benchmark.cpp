@@ -152,6 +152,7 @@ repeatable_references(const Scene& scene, const std::vector<Material>& materials
     ro.method = RenderMethod::Reference;
     ro.samples = options.reference_samples;
     ro.threads = options.threads;
+    ro.region = options.region;
     std::optional<RenderedImage> first, second;
     for (int round = 0;; ++round) {
         ro.seed = options.seed + (round == 0 ? 0 : 2 * round + 1);
@@ -203,6 +204,11 @@ Expected<SceneBench> bench_scene(const Scene& scene, std::vector<Material>& mate
 {
     if (options.repeats < 1) return bad_input("bench: repeats must be >= 1, got " + std::to_string(options.repeats));
     if (auto st = check_reference_options(options); !st) return st.error();
+    if (options.region)
+        if (auto st =
+                check_pixel_region(*options.region, scene.camera.width, scene.camera.height, "BenchOptions::region");
+            !st)
+            return prefixed(scene.path + ": ", st.error());
     SceneBench bench;
     bench.scene = scene.path;
 
@@ -211,8 +217,9 @@ Expected<SceneBench> bench_scene(const Scene& scene, std::vector<Material>& mate
     const RenderedImage& reference = references->first;
     const RenderedImage& second = references->second;
     const Bands bands = distance_bands(reference);
-    bench.width = reference.width;
-    bench.height = reference.height;
+    bench.width = reference.frame_width;
+    bench.height = reference.frame_height;
+    bench.region = {reference.x0, reference.y0, reference.x0 + reference.width, reference.y0 + reference.height};
     for (std::size_t p = 0; p < reference.hit.size(); ++p) bench.pixels_hit += surface_distance(reference, p) ? 1 : 0;
     bench.near_distance = bands.near;
     bench.horizon_distance = bands.horizon;
@@ -294,6 +301,7 @@ Expected<SceneBench> bench_scene(const Scene& scene, std::vector<Material>& mate
         r.footprint = c.footprint;
         r.max_probes = options.max_probes;
         r.edge_coverage = options.edge_coverage;
+        r.region = options.region;
         row.seconds = std::numeric_limits<double>::infinity();
         Expected<RenderedImage> image = bad_input("bench: no render");
         for (int k = 0; k < options.repeats; ++k) {
@@ -309,6 +317,7 @@ Expected<SceneBench> bench_scene(const Scene& scene, std::vector<Material>& mate
                          std::to_string(row.error.all.mean));
         bench.rows.push_back(row);
     }
+    if (options.keep_reference) bench.reference_image = std::move(references->first);
     return bench;
 }
 

@@ -15,16 +15,24 @@
 // averages it in, so the rays per pixel go N, 2N, 3N, ... up to
 // `max_reference_samples`: the fewest rays that make the reference as
 // repeatable as asked (the rows then say how many it took).
+// With a region (BenchOptions::region) every render, the references and
+// each configuration, computes only the region's pixels, and the errors, the
+// bands and the references' growth are the region's: a region's reference
+// holds the whole frame's pixels bit for bit when its rays are fixed
+// (max_reference_samples == reference_samples: one round), since every
+// pixel's rays are seeded by its index in the frame (docs/farm.md).
 #pragma once
 
 #include "cmfilter/util/error.h"
 #include "cmfilter/color/error_summary.h"
 #include "cmfilter/tables/gaussian_color_table.h"
+#include "cmfilter/render/pixel_region.h"
 #include "cmfilter/render/render.h"
 #include "cmfilter/scene/scene.h"
 #include "cmfilter/scene/scene_materials.h"
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -84,13 +92,17 @@ struct BenchRow {
 
 struct SceneBench {
     std::string scene;
-    int width = 0, height = 0;
-    std::size_t pixels_hit = 0;                      // the pixels compared: a surface covers them at least in part
+    int width = 0, height = 0;   // the frame
+    PixelRegion region;          // the pixels rendered and compared (the whole frame without a region)
+    std::size_t pixels_hit = 0;  // the pixels compared: a surface covers them at least in part
     double near_distance = 0, horizon_distance = 0;  // band limits: the hit distances' terciles
     double reference_seconds = 0;                    // the reference's rounds together
     int reference_samples = 0;                       // rays per pixel of the reference, all rounds together
     BandedError reference_repeatability;             // the reference against the second one (other seeds)
     std::vector<BenchRow> rows;
+    // The reference the rows were measured against (all its rounds), when
+    // BenchOptions::keep_reference.
+    std::optional<RenderedImage> reference_image;
 };
 
 struct BenchOptions {
@@ -103,12 +115,15 @@ struct BenchOptions {
     int threads = 0;
     int max_probes = 16;                           // RenderOptions::max_probes for naive and gaussian
     bool edge_coverage = true;                     // RenderOptions::edge_coverage for naive and gaussian
+    std::optional<PixelRegion> region;             // RenderOptions::region of every render; empty: the frame
+    bool keep_reference = false;                   // keep the reference image in SceneBench::reference_image
     std::function<void(const std::string&)> note;  // one line per finished render, may be empty
 };
 
 // BadInput naming the field unless kReferenceSamples <= reference_samples
 // <= max_reference_samples <= kMaxSamples and reference_repeat is finite and
-// >= 0; bench_scene checks it first.
+// >= 0; bench_scene checks it first, and then that the region, if any, lies
+// in the scene's frame (BadInput naming BenchOptions::region).
 Status check_reference_options(const BenchOptions& options);
 
 // `materials` are re-baked in place for each gaussian configuration (their

@@ -22,7 +22,8 @@ Status check_rgb_image_output(const std::string& path, bool exr_only)
 }
 
 Status write_rgb_image(const std::string& path, int width, int height, int channels, const std::vector<float>& pixels,
-                       const std::string& linear_space, const ImageAttributes& attributes, const ColorConfig& config)
+                       const std::string& linear_space, const ImageAttributes& attributes, const ColorConfig& config,
+                       const FramePlacement& window)
 {
     if (auto st = check_rgb_image_output(path); !st) return st;
     const bool exr = lowercase_extension(path) == ".exr";
@@ -32,7 +33,26 @@ Status write_rgb_image(const std::string& path, int width, int height, int chann
         static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * static_cast<std::size_t>(channels))
         return runtime_error("image for '" + path + "' has " + std::to_string(pixels.size()) + " values, expected " +
                              std::to_string(static_cast<long long>(width) * height * channels));
+    const bool framed = window.full_width > 0 &&
+                        !(window.x == 0 && window.y == 0 && window.full_width == width && window.full_height == height);
+    if (framed && !exr)
+        return bad_input("output '" + path + "': a region of a larger frame needs OpenEXR (.exr), whose data window " +
+                         "places it in the frame; PNG and JPEG hold whole images only");
+    if (framed && (window.x < 0 || window.y < 0 || window.x + width > window.full_width ||
+                   window.y + height > window.full_height))
+        return runtime_error("image for '" + path + "': " + std::to_string(width) + " x " + std::to_string(height) +
+                             " pixels at " + std::to_string(window.x) + "," + std::to_string(window.y) +
+                             " do not lie in the " + std::to_string(window.full_width) + " x " +
+                             std::to_string(window.full_height) + " frame");
     OIIO::ImageSpec spec(width, height, channels, exr ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+    if (framed) {
+        spec.x = window.x;
+        spec.y = window.y;
+        spec.full_x = 0;
+        spec.full_y = 0;
+        spec.full_width = window.full_width;
+        spec.full_height = window.full_height;
+    }
     if (channels == 1) spec.channelnames = {"Y"};
     for (const auto& [key, value] : attributes.text) spec.attribute(key, value);
     for (const auto& [key, value] : attributes.numbers) set_double_attribute(spec, key.c_str(), value);

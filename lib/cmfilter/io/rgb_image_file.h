@@ -24,10 +24,23 @@ struct ImageAttributes {
 // `exr_only`) and its folder exists.
 Status check_rgb_image_output(const std::string& path, bool exr_only = false);
 
+// Where an image's pixels lie in a larger frame: width x height pixels from
+// column x, row y of a full_width x full_height frame (OpenEXR's data window
+// inside its display window; OpenImageIO's x, y, full_width, full_height).
+// full_width 0: the image is the whole frame.
+struct FramePlacement {
+    int x = 0, y = 0;
+    int full_width = 0, full_height = 0;
+};
+
 // `pixels` holds width * height * channels floats, top row first. PNG/JPEG
 // need 3 channels. `linear_space` names the colour space of the floats in
-// the EXR (empty for data such as AOVs).
+// the EXR (empty for data such as AOVs). `window`: the frame the pixels lie
+// in, written as the EXR's display window (its data window the pixels'
+// own); BadInput for PNG/JPEG, which hold no data window, unless the image
+// is the whole frame; Runtime for a frame that does not hold the image.
 Status write_rgb_image(const std::string& path, int width, int height, int channels, const std::vector<float>& pixels,
-                       const std::string& linear_space, const ImageAttributes& attributes, const ColorConfig& config);
+                       const std::string& linear_space, const ImageAttributes& attributes, const ColorConfig& config,
+                       const FramePlacement& window = {});
 
 }  // namespace cmfilter

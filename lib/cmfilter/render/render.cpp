@@ -86,9 +86,11 @@ void store_rgb(std::vector<float>& rgb, std::size_t p, const Rgb& c)
     rgb[3 * p + 2] = static_cast<float>(c.b);
 }
 
-// One row of the image: each pixel's centre ray (geometry, footprint and
-// the AOVs), its edge coverage (the one-ray methods) or its rays
-// (supersample, reference).
+// One row of the image, the region's part of it: each pixel's centre ray
+// (geometry, footprint and the AOVs), its edge coverage (the one-ray
+// methods) or its rays (supersample, reference). Pixels are addressed in the
+// whole frame (x, y and the sub-pixel samples' stream, keyed by the pixel's
+// index in the frame), so a region's pixels are the frame's, bit for bit.
 struct RowRenderer {
     const RenderContext& context;
     const Camera& camera;
@@ -104,9 +106,12 @@ struct RowRenderer {
         std::vector<double> xs, ys;
         PixelSamples samples;
         PixelCover cover;
-        for (int x = 0; x < image.width; ++x) {
-            const std::size_t p = static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) +
-                                  static_cast<std::size_t>(x);
+        for (int x = image.x0; x < image.x0 + image.width; ++x) {
+            // The pixel's index in the frame (its samples' stream) and in the image.
+            const std::size_t frame_index = static_cast<std::size_t>(y) * static_cast<std::size_t>(image.frame_width) +
+                                            static_cast<std::size_t>(x);
+            const std::size_t p = static_cast<std::size_t>(y - image.y0) * static_cast<std::size_t>(image.width) +
+                                  static_cast<std::size_t>(x - image.x0);
             const CameraRay centre = camera.ray(x + 0.5, y + 0.5);
             const auto hit = intersect_scene(scene, centre);
             Rgb colour = scene.background;
@@ -133,18 +138,18 @@ struct RowRenderer {
                                          : scene.background);
                 }
             }
-            if (context.supersampled) colour = supersample(x, y, p, xs, ys, samples);
+            if (context.supersampled) colour = supersample(x, y, frame_index, p, xs, ys, samples);
             store_rgb(image.rgb, p, colour);
         }
     }
 
     // The pixel's rays, each hit coloured by its surface: the colour, and
     // the shaded image and coverage AOVs.
-    Rgb supersample(int x, int y, std::size_t p, std::vector<double>& xs, std::vector<double>& ys,
-                    PixelSamples& samples) const
+    Rgb supersample(int x, int y, std::size_t frame_index, std::size_t p, std::vector<double>& xs,
+                    std::vector<double>& ys, PixelSamples& samples) const
     {
         const Scene& scene = context.scene;
-        sample_positions(image.samples, context.options.seed, p, xs, ys);
+        sample_positions(image.samples, context.options.seed, frame_index, xs, ys);
         samples.sum = samples.shaded_sum = Rgb{};
         samples.hits = 0;
         samples.distance = 0;
@@ -188,11 +193,14 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<Material>& 
     }
     auto camera = Camera::create(scene.camera);
     if (!camera) return camera.error();
+    const PixelRegion region = options.region.value_or(whole_frame(camera->width(), camera->height()));
+    if (auto st = check_pixel_region(region, camera->width(), camera->height()); !st) return st.error();
     // The image and its per-pixel AOVs (RenderedImage), and the copies the
-    // output files are written from: at most kRenderBytesPerPixel.
-    if (auto fits = check_allocation(double(camera->width()) * camera->height() * kRenderBytesPerPixel,
-                                     "the render of '" + scene.path + "' (" + std::to_string(camera->width()) + " x " +
-                                         std::to_string(camera->height()) + " pixels)");
+    // output files are written from: at most kRenderBytesPerPixel, for the
+    // region's pixels only.
+    if (auto fits = check_allocation(double(region.width()) * region.height() * kRenderBytesPerPixel,
+                                     "the render of '" + scene.path + "' (" + std::to_string(region.width()) + " x " +
+                                         std::to_string(region.height()) + " pixels)");
         !fits)
         return fits.error();
     // D_h's exact moments for gaussian-exact (height_moment_table.h), made
@@ -215,8 +223,12 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<Material>& 
         layers, height_table ? &*height_table : nullptr};
 
     RenderedImage image;
-    image.width = camera->width();
-    image.height = camera->height();
+    image.width = region.width();
+    image.height = region.height();
+    image.x0 = region.x0;
+    image.y0 = region.y0;
+    image.frame_width = camera->width();
+    image.frame_height = camera->height();
     image.method = options.method;
     image.samples = options.method == RenderMethod::Reference ? std::max(options.samples, kReferenceSamples)
                     : context.supersampled                    ? options.samples
@@ -247,9 +259,9 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<Material>& 
     std::atomic<std::size_t> footprints{0}, plain_footprints{0};
     std::mutex progress_mutex;
     const Stopwatch clock;
-    parallel_for(image.height, options.threads, [&](int y) {
+    parallel_for(image.height, options.threads, [&](int row_index) {
         HitScratch scratch;
-        row(y, scratch);
+        row(image.y0 + row_index, scratch);
         footprints += scratch.counts.footprints;
         plain_footprints += scratch.counts.plain;
         const int done = ++rows_done;

@@ -44,7 +44,9 @@
 // The one-ray methods cover the pixels on silhouettes, horizons and meetings
 // of surfaces geometrically (RenderOptions::edge_coverage, pixel_coverage.h).
 // Shading: Lambertian, albedo x (radiance max(0, <n, l>) + ambient).
-// Deterministic for a given seed, whatever the thread count.
+// Deterministic for a given seed, whatever the thread count; a region of the
+// frame (RenderOptions::region) holds the same pixels, bit for bit, as the
+// whole frame's render.
 #pragma once
 
 #include "cmfilter/render/render_options.h"
@@ -63,8 +65,14 @@ namespace cmfilter {
 inline constexpr double kRenderBytesPerPixel = 64;
 
 struct RenderedImage {
+    // The pixels computed: width x height from (x0, y0) of the camera's
+    // frame_width x frame_height frame (the whole frame unless
+    // RenderOptions::region asked for less). Every vector below holds those
+    // pixels only, top row first.
     int width = 0, height = 0;
-    std::vector<float> rgb;  // scene-linear, top row first
+    int x0 = 0, y0 = 0;
+    int frame_width = 0, frame_height = 0;
+    std::vector<float> rgb;  // scene-linear
     // Per pixel, from the ray through its centre (every method): whether it
     // hit a surface, its distance, and the filtered mean, sigma and LOD of
     // the driver there (0 where nothing is hit).
@@ -90,7 +98,8 @@ struct RenderedImage {
 // Each surface is coloured by its material's driver kind
 // (surface_renderer.h). BadInput for a sample count outside 1 .. kMaxSamples,
 // a material count that does not match the scene, or, for the exact method,
-// a noise driver or a texture without its histogram pyramid;
+// a noise driver or a texture without its histogram pyramid, or a
+// RenderOptions::region that is empty or outside the camera's frame;
 // Io for supersample or reference on a texture without its level 0 (a
 // moments driver whose recorded driver is gone, naming it).
 Expected<RenderedImage> render(const Scene& scene, const std::vector<Material>& materials,

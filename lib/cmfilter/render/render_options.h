@@ -4,11 +4,13 @@
 
 #include "cmfilter/microsurface/light_weighted_slope_map.h"
 #include "cmfilter/microsurface/smith_lambda.h"
+#include "cmfilter/render/pixel_region.h"
 #include "cmfilter/texture/footprint_width.h"
 #include "cmfilter/util/error.h"
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 
 namespace cmfilter {
@@ -49,6 +51,11 @@ struct RenderOptions {
     // docs/slope.md), or eq. 19's colour (the facets' shading uncorrelated
     // with it).
     SlopeShading slope_shading = SlopeShading::Correlated;
+    // The pixels to compute (pixel_region.h; within the camera's frame):
+    // each exactly as the whole frame's render computes it, whatever the
+    // thread count, since every pixel's rays are seeded by its index in the
+    // whole frame. Empty: the whole frame.
+    std::optional<PixelRegion> region;
     std::function<void(double)> progress;  // fraction of rows done, may be empty
 };
 

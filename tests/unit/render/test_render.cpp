@@ -4,7 +4,8 @@
 // itself), results do not depend on the thread count, misses are background,
 // and the footprint widths match their definitions, rms against a
 // Monte-Carlo variance of a linear function over the parallelogram; the
-// small-sigma shortcut colours a probe C0(mean) exactly where it applies.
+// small-sigma shortcut colours a probe C0(mean) exactly where it applies; a
+// region of the frame holds the frame's own pixels.
 #include "cmfilter/color/color_config.h"
 #include "cmfilter/colormap/color_map_loading.h"
 #include "cmfilter/texture/anisotropic_probes.h"
@@ -93,6 +94,77 @@ TEST_CASE("renders do not depend on the thread count and repeat with the same se
         CHECK(two->rgb == again->rgb);
         CHECK(one->sigma == two->sigma);
     }
+}
+
+TEST_CASE("a region's pixels are the whole frame's, bit for bit, for every method and thread count")
+{
+    // The frame's horizon crosses the regions, so edge coverage runs in them.
+    const PlaneScene s = plane_scene(24, 14);
+    const PixelRegion region{5, 3, 17, 11};
+    for (RenderMethod method :
+         {RenderMethod::Naive, RenderMethod::Gaussian, RenderMethod::Supersample, RenderMethod::Reference}) {
+        CAPTURE(to_string(method));
+        RenderOptions options;
+        options.method = method;
+        options.samples = 5;  // supersample: not a square, the N-rooks pattern
+        options.seed = 3;
+        options.threads = 1;
+        auto frame = render(s.scene, s.materials, options);
+        REQUIRE(frame);
+        CHECK(frame->x0 == 0);
+        CHECK(frame->frame_width == 24);
+        for (int threads : {1, 2, 3}) {
+            options.threads = threads;
+            options.region = region;
+            auto part = render(s.scene, s.materials, options);
+            REQUIRE(part);
+            REQUIRE(part->width == region.width());
+            REQUIRE(part->height == region.height());
+            CHECK(part->x0 == region.x0);
+            CHECK(part->y0 == region.y0);
+            CHECK(part->frame_width == 24);
+            CHECK(part->frame_height == 14);
+            std::size_t differing = 0;
+            for (int y = region.y0; y < region.y1; ++y)
+                for (int x = region.x0; x < region.x1; ++x) {
+                    const std::size_t f = static_cast<std::size_t>(y * 24 + x);
+                    const std::size_t r = static_cast<std::size_t>((y - region.y0) * region.width() + x - region.x0);
+                    for (int c = 0; c < 3; ++c) differing += part->rgb[3 * r + c] != frame->rgb[3 * f + c];
+                    differing += part->mean[r] != frame->mean[f];
+                    differing += part->sigma[r] != frame->sigma[f];
+                    differing += part->lod[r] != frame->lod[f];
+                    differing += part->hit[r] != frame->hit[f];
+                    if (!frame->covered.empty()) differing += part->covered[r] != frame->covered[f];
+                }
+            CAPTURE(threads);
+            CHECK(differing == 0);
+        }
+    }
+}
+
+TEST_CASE("render refuses an empty region and one outside the frame, naming the field")
+{
+    const PlaneScene s = plane_scene(8, 6);
+    RenderOptions options;
+    options.method = RenderMethod::Naive;
+    for (const PixelRegion& bad : {PixelRegion{2, 2, 2, 5}, PixelRegion{0, 3, 8, 1}, PixelRegion{0, 0, 9, 6},
+                                   PixelRegion{-1, 0, 4, 4}, PixelRegion{0, 0, 8, 7}}) {
+        options.region = bad;
+        auto image = render(s.scene, s.materials, options);
+        REQUIRE_FALSE(image);
+        CAPTURE(image.error().message);
+        CHECK(image.error().kind == ErrorKind::BadInput);
+        CHECK(image.error().field == "RenderOptions::region");
+        CHECK(image.error().message.find("RenderOptions::region " + to_string(bad)) == 0);
+        CHECK(image.error().message.find("in the 8 x 6 frame") != std::string::npos);
+    }
+    options.region = PixelRegion{0, 0, 8, 6};  // the whole frame, as without a region
+    auto whole = render(s.scene, s.materials, options);
+    options.region.reset();
+    auto plain = render(s.scene, s.materials, options);
+    REQUIRE(whole);
+    REQUIRE(plain);
+    CHECK(whole->rgb == plain->rgb);
 }
 
 TEST_CASE("pixels that miss every surface are the background, for every method")
