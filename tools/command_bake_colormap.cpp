@@ -27,6 +27,20 @@ namespace cmfilter::cli {
 
 namespace {
 
+// The flags of the fields bake-colormap's library calls may name.
+FieldFlags bake_colormap_flags()
+{
+    FieldFlags flags = color_map_flags();
+    for (auto& f : exr_output_flags()) flags.push_back(f);
+    flags.insert(flags.end(), {{"ColorMapLoadOptions::colorspace", "--colorspace"},
+                               {"GaussianColorTableOptions::values", "--values"},
+                               {"GaussianColorTableOptions::sigmas", "--sigmas"},
+                               {"GaussianColorTableOptions::sigma_max", "--sigma-max"},
+                               {"GaussianColorTableOptions::margin", "--margin"},
+                               {"TableSizeSearchOptions::tolerance", "--tolerance"}});
+    return flags;
+}
+
 struct BakeColormapArgs {
     std::string map_path;
     std::string output;
@@ -182,7 +196,7 @@ Status run(const BakeColormapArgs& args, const CLI::App& app)
         j["sigma_spacing"] = to_string(ax.spacing);
         j["source"] = info.source.path;
         j["colorspace"] = info.source.colorspace;
-        j["colorspace_rule"] = info.source.colorspace_rule;
+        j["colorspace_rule"] = name_flags(info.source.colorspace_rule, bake_colormap_flags());
         j["bake_ms"] = bake_ms;
         j["bytes"] = table_bytes;
         j["sigma_max_source"] = info.sigma_max_source;
@@ -221,7 +235,8 @@ Status run(const BakeColormapArgs& args, const CLI::App& app)
                   << " sigmas\n"
                   << "  map      " << info.source.path << " (" << info.source.image_width << " x "
                   << info.source.image_height << ", " << info.source.selection << "), " << info.source.colorspace
-                  << " -> " << info.source.linear_space << " (" << info.source.colorspace_rule << ")\n"
+                  << " -> " << info.source.linear_space << " ("
+                  << name_flags(info.source.colorspace_rule, bake_colormap_flags()) << ")\n"
                   << "  values   domain [" << ax.vmin << ", " << ax.vmax << "], wrap " << to_string(ax.wrap)
                   << ", axis [" << ax.value_first() << ", " << ax.value_last() << "]\n"
                   << "  sigmas   0 .. " << ax.sigma_max << ", " << to_string(ax.spacing)
@@ -301,10 +316,8 @@ Command setup_bake_colormap(CLI::App& parent)
     add_exr_output_options(*app, args->storage, "scanlines");
     app->add_flag("--json", args->json, "Print a machine-readable summary on stdout");
     app->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
-    FieldFlags flags = color_map_flags();
-    for (auto& f : exr_output_flags()) flags.push_back(f);
     add_update_option(*app, args->update);
-    return {app, [args, app] { return run(*args, *app); }, flags};
+    return {app, [args, app] { return run(*args, *app); }, bake_colormap_flags()};
 }
 
 }  // namespace cmfilter::cli

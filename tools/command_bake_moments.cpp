@@ -160,7 +160,9 @@ Command setup_bake_moments(CLI::App& parent)
     app->add_flag("--json", args->json, "Print a machine-readable summary on stdout");
     app->add_flag("-q,--quiet", args->quiet, "Print nothing on success (and no progress)");
     add_update_option(*app, args->update);
-    return {app, [args, app] { return run(*args, *app); }, exr_output_flags()};
+    FieldFlags flags = exr_output_flags();
+    flags.insert(flags.end(), {{"DriverReadOptions::channel", "--channel"}, {"DriverReadOptions::nonfinite", "--nan"}});
+    return {app, [args, app] { return run(*args, *app); }, flags};
 }
 
 }  // namespace cmfilter::cli

@@ -19,6 +19,14 @@ namespace cmfilter::cli {
 
 namespace {
 
+// The flags of the fields compare's library calls may name.
+FieldFlags compare_flags()
+{
+    return {{"ImageComparisonOptions::heatmap_max", "--heatmap-max"},
+            {"ImageComparisonOptions::colorspace_a", "--colorspace-a"},
+            {"ImageComparisonOptions::colorspace_b", "--colorspace-b"}};
+}
+
 struct CompareArgs {
     ImageComparisonOptions options;  // the options bind straight to its fields
     std::string ocio_config;
@@ -64,7 +72,7 @@ nlohmann::json image_json(const ComparedImage& image)
             {"channels", image.channels},
             {"pixel_type", image.pixel_type},
             {"colorspace", image.colorspace},
-            {"colorspace_rule", image.colorspace_rule}};
+            {"colorspace_rule", name_flags(image.colorspace_rule, compare_flags())}};
 }
 
 void print_table(const ImageComparison& c)
@@ -73,8 +81,8 @@ void print_table(const ImageComparison& c)
               << c.pixels << " pixels, R G B in " << c.linear_space << "\n";
     for (const ComparedImage* image : {&c.a, &c.b})
         std::cout << "  " << (image == &c.a ? "A" : "B") << "  " << image->path << ": " << image->channels
-                  << " channels " << image->pixel_type << ", " << image->colorspace << " (" << image->colorspace_rule
-                  << ")\n";
+                  << " channels " << image->pixel_type << ", " << image->colorspace << " ("
+                  << name_flags(image->colorspace_rule, compare_flags()) << ")\n";
     const auto row = [](const char* name, double value) {
         std::cout << "  " << std::left << std::setw(16) << name << std::right << std::setw(12) << std::setprecision(6)
                   << value << "\n";
@@ -179,10 +187,7 @@ Command setup_compare(CLI::App& parent)
                     "The statistic --warn and --fail test: mean, p95 or max (as idiff, the largest pixel)")
         ->capture_default_str();
     app->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
-    return {app,
-            [args] { return run(*args); },
-            {{"ImageComparisonOptions::heatmap_max", "--heatmap-max"}},
-            [args] { return args->exit_code; }};
+    return {app, [args] { return run(*args); }, compare_flags(), [args] { return args->exit_code; }};
 }
 
 }  // namespace cmfilter::cli

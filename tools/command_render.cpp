@@ -319,7 +319,10 @@ Command setup_render(CLI::App& parent)
     app->add_flag("--json", args->json, "Print a machine-readable summary on stdout");
     app->add_flag("-q,--quiet", args->quiet, "Print nothing on success (and no progress)");
     FieldFlags flags = color_map_flags();
-    flags.push_back({"RenderOptions::region", "--region"});
+    flags.insert(flags.end(), {{"RenderOptions::region", "--region"},
+                               {"RenderOptions::samples", "--spp"},
+                               {"TableChoiceOptions::tolerance", "--tolerance"},
+                               {"TableChoiceOptions::plain_bound", "--shortcut"}});
     return {app, [args] { return run(*args); }, flags};
 }
 

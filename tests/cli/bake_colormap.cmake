@@ -56,7 +56,7 @@ cmfilter_cli_case(NAME bad.tolerance-percentile EXIT 3
                   STDERR "--tolerance-percentile 0 is invalid \\(expected 0 < P <= 100; 100 is the maximum\\)"
                   ABSENT ${T} COMMAND ${CMF} bake-colormap ${LUTS}/terrain.png -o ${T} --tolerance 1 --tolerance-percentile 0)
 cmfilter_cli_case(NAME bad.tolerance-impossible EXIT 3
-                  STDERR "no table up to 4096 values x 1024 sigmas meets --tolerance 1e-06 \\(CIEDE2000 p99\\.9 at 20000 random \\(v, sigma\\), sigma_max 0\\.25\\): the lowest p99\\.9 reached is [0-9.e-]+, by [0-9]+ x [0-9]+ (sqrt|linear)"
+                  STDERR "no table up to 4096 values x 1024 sigmas meets the tolerance 1e-06 \\(CIEDE2000 p99\\.9 at 20000 random \\(v, sigma\\), sigma_max 0\\.25\\): the lowest p99\\.9 reached is [0-9.e-]+, by [0-9]+ x [0-9]+ (sqrt|linear)"
                   ABSENT ${T} COMMAND ${CMF} bake-colormap ${LUTS}/step.png -o ${T} --tolerance 1e-6 --threads 2)
 cmfilter_cli_case(NAME usage.tolerance-with-values EXIT 1 STDERR "--values excludes --tolerance"
                   ABSENT ${T} COMMAND ${CMF} bake-colormap ${LUTS}/terrain.png -o ${T} --tolerance 1 --values 64)

@@ -108,7 +108,7 @@ cmfilter_cli_case(NAME render.bad.tolerance-zero EXIT 3 STDERR "--tolerance 0 is
                   ABSENT ${RO} COMMAND ${CMF} render ${SC}/good.json --tolerance 0 -o ${RO})
 cmfilter_cli_case(NAME render.bad.shortcut-negative EXIT 3 STDERR "--shortcut -1 is invalid"
                   ABSENT ${RO} COMMAND ${CMF} render ${SC}/good.json --shortcut -1 -o ${RO})
-cmfilter_cli_case(NAME render.bad.tolerance-unreachable EXIT 3 STDERR "/surfaces/0/material/colormap: no table up to 4096 values x 1024 sigmas meets --tolerance 1e-06"
+cmfilter_cli_case(NAME render.bad.tolerance-unreachable EXIT 3 STDERR "/surfaces/0/material/colormap: no table up to 4096 values x 1024 sigmas meets the tolerance 1e-06"
                   ABSENT ${RO} COMMAND ${CMF} render ${SC}/good.json --tolerance 1e-6 -o ${RO})
 
 # Microsurface materials (height-correlated colour, sec. 5.1): the bundled

@@ -95,8 +95,9 @@ Expected<LoadedColorMap> load_color_map(const ColorMapLoadOptions& options, cons
         }
         std::ostringstream msg;
         msg << "'" << options.path << "' is " << img.width << " x " << img.height
-            << "; pass --row N or --column N to pick the gradient (or use a W x 1 image)";
-        return bad_input(msg.str());
+            << "; pass ColorMapLoadOptions::row N or ColorMapLoadOptions::column N to pick the gradient (or use a W x "
+               "1 image)";
+        return bad_input(msg.str(), "ColorMapLoadOptions::row");
     };
     auto image = read_image(options.path, choose);
     if (!image) return image.error();
@@ -106,7 +107,8 @@ Expected<LoadedColorMap> load_color_map(const ColorMapLoadOptions& options, cons
     if (!texels) return texels.error();
     std::vector<float>& rgb = *texels;
 
-    auto space = decide_image_colorspace(img, options.path, options.colorspace, "--colorspace", config);
+    auto space =
+        decide_image_colorspace(img, options.path, options.colorspace, "ColorMapLoadOptions::colorspace", config);
     if (!space) return space.error();
     if (auto st = image_rgb_to_scene_linear(rgb, *space, config); !st) return st.error();
 

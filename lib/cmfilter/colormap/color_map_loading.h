@@ -33,10 +33,11 @@ struct ColorMapProvenance {
     std::string sha256;  // of the file's bytes
     int image_width = 0;
     int image_height = 0;
-    std::string selection;          // "row 0", "column 3"
-    std::string colorspace;         // canonical OCIO name the texels were converted from
-    std::string colorspace_rule;    // "--colorspace", "file metadata", "default for integer files", ...
-    std::string linear_space;       // the config's scene_linear colour space
+    std::string selection;   // "row 0", "column 3"
+    std::string colorspace;  // canonical OCIO name the texels were converted from
+    std::string
+        colorspace_rule;       // "ColorMapLoadOptions::colorspace", "file metadata", "default for integer files", ...
+    std::string linear_space;  // the config's scene_linear colour space
     std::string linear_interop_id;  // its colour interop ID ("lin_ap1_scene"), or empty (ColorConfig::interop_id)
     std::string ocio_config;        // "built-in" or a path
 };

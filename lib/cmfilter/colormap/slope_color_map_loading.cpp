@@ -23,7 +23,8 @@ Expected<LoadedSlopeVectorColorMap> load_slope_vector_color_map(const SlopeVecto
         if (!row) return row.error();
         rgb.insert(rgb.end(), row->begin(), row->end());
     }
-    auto space = decide_image_colorspace(img, options.path, options.colorspace, "colorspace", config);
+    auto space = decide_image_colorspace(img, options.path, options.colorspace,
+                                         "SlopeVectorColorMapLoadOptions::colorspace", config);
     if (!space) return space.error();
     if (auto st = image_rgb_to_scene_linear(rgb, *space, config); !st) return st.error();
 

@@ -34,7 +34,8 @@ Expected<int> select_channel(const std::string& path, const OIIO::ImageSpec& spe
     if (wanted.empty()) {
         if (spec.nchannels == 1) return 0;
         return bad_input("'" + path + "' has " + std::to_string(spec.nchannels) + " channels " + channels +
-                         "; a driver is one channel: choose it with --channel NAME or INDEX");
+                             "; a driver is one channel: choose it with DriverReadOptions::channel NAME or INDEX",
+                         "DriverReadOptions::channel");
     }
     for (int c = 0; c < static_cast<int>(spec.channelnames.size()); ++c)
         if (spec.channelnames[c] == wanted) return c;
@@ -129,8 +130,8 @@ Expected<DriverImage> read_driver(const DriverReadOptions& options)
         std::ostringstream msg;
         msg << "'" << path << "' has " << total.nonfinite << " non-finite texel" << (total.nonfinite == 1 ? "" : "s")
             << " (first at (" << total.first_bad << ", " << first_bad_row << "): " << total.first_bad_value
-            << "); expected finite values (--nan zero replaces them with 0)";
-        return bad_input(msg.str());
+            << "); expected finite values (DriverReadOptions::nonfinite zero replaces them with 0)";
+        return bad_input(msg.str(), "DriverReadOptions::nonfinite");
     }
     d.nonfinite_replaced = total.nonfinite;
     d.mean = total.sum / static_cast<double>(d.values.size());

@@ -30,7 +30,7 @@ Expected<ImageColorSpace> choose(const ImageData& img, const std::string& path, 
         std::ostringstream msg;
         msg << "'" << path << "' declares gamma " << g << ", which no colour space of the config matches; pass "
             << option << " NAME";
-        return bad_input(msg.str());
+        return bad_input(msg.str(), option);
     }
     if (!img.colorspace_attr.empty()) return ImageColorSpace{img.colorspace_attr, "file metadata"};
     if (std::string ruled = config.file_rule_space(path); !ruled.empty())
@@ -58,8 +58,9 @@ Expected<ImageColorSpace> decide_image_colorspace(const ImageData& img, const st
     if (!canonical) {
         if (choice->rule == "file metadata")
             return bad_input("'" + path + "' declares colour space '" + choice->colorspace +
-                             "' (oiio:ColorSpace), which the " + config.source() +
-                             " OpenColorIO config does not know; pass " + option + " NAME");
+                                 "' (oiio:ColorSpace), which the " + config.source() +
+                                 " OpenColorIO config does not know; pass " + option + " NAME",
+                             option);
         return canonical.error();
     }
     return ImageColorSpace{*canonical, choice->rule};

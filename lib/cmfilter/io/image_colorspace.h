@@ -18,13 +18,14 @@ namespace cmfilter {
 
 struct ImageColorSpace {
     std::string colorspace;  // canonical OpenColorIO name the pixels are in
-    std::string rule;        // why: the option's name, "file metadata", "default for float files", ...
+    std::string rule;        // why: the options field, "file metadata", "default for float files", ...
 };
 
 // Decides and resolves the colour space of `img`, read from `path`.
 // `requested` is the caller's explicit choice (empty: decide from the file);
-// `option` names where that choice comes from ("--colorspace"): it is the rule
-// when `requested` is used, and the hint in errors about the file's metadata.
+// `option` is the options field that holds that choice
+// ("ColorMapLoadOptions::colorspace"): it is the rule when `requested` is
+// used, and the field errors about the file's metadata name.
 Expected<ImageColorSpace> decide_image_colorspace(const ImageData& img, const std::string& path,
                                                   const std::string& requested, const std::string& option,
                                                   const ColorConfig& config);

@@ -113,9 +113,9 @@ Expected<ImageComparison> compare_images(const ImageComparisonOptions& options, 
     if (heatmap)
         if (auto st = check_output_path(options.heatmap_path, ".png"); !st) return st.error();
 
-    auto a = load_linear(options.path_a, options.colorspace_a, "--colorspace-a", config);
+    auto a = load_linear(options.path_a, options.colorspace_a, "ImageComparisonOptions::colorspace_a", config);
     if (!a) return a.error();
-    auto b = load_linear(options.path_b, options.colorspace_b, "--colorspace-b", config);
+    auto b = load_linear(options.path_b, options.colorspace_b, "ImageComparisonOptions::colorspace_b", config);
     if (!b) return b.error();
     if (a->data.width != b->data.width || a->data.height != b->data.height) {
         std::ostringstream msg;

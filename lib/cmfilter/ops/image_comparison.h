@@ -35,10 +35,11 @@ struct ImageComparisonOptions {
 
 struct ComparedImage {
     std::string path;
-    int channels = 0;             // in the file (1-2: grey, >= 3: RGB first, the rest ignored)
-    std::string pixel_type;       // as stored ("uint8", "half", "float", ...)
-    std::string colorspace;       // canonical OpenColorIO name the pixels were converted from
-    std::string colorspace_rule;  // "--colorspace-a", "file metadata", "default for float files", ...
+    int channels = 0;        // in the file (1-2: grey, >= 3: RGB first, the rest ignored)
+    std::string pixel_type;  // as stored ("uint8", "half", "float", ...)
+    std::string colorspace;  // canonical OpenColorIO name the pixels were converted from
+    std::string
+        colorspace_rule;  // "ImageComparisonOptions::colorspace_a", "file metadata", "default for float files", ...
 };
 
 struct ImageComparison {

@@ -28,7 +28,7 @@ Expected<RenderMethod> parse_render_method(const std::string& text)
 Status check_render_samples(int samples)
 {
     if (samples < 1 || samples > kMaxSamples)
-        return bad_input("--spp " + std::to_string(samples) + " is out of range (expected 1 to " +
+        return bad_input("RenderOptions::samples " + std::to_string(samples) + " is out of range (expected 1 to " +
                              std::to_string(kMaxSamples) + ")",
                          "RenderOptions::samples");
     return ok();

@@ -17,11 +17,11 @@ Error located(const Scene& scene, std::size_t surface, const Error& e)
     return prefixed(scene.path + ": /surfaces/" + std::to_string(surface) + "/material/colormap: ", e);
 }
 
-Status check_optional(const std::optional<double>& value, const char* name, const char* field, const char* expected)
+Status check_optional(const std::optional<double>& value, const char* field, const char* expected)
 {
     if (value && !(std::isfinite(*value) && *value >= 0)) {
         std::ostringstream msg;
-        msg << name << " " << *value << " is invalid (expected " << expected << ")";
+        msg << field << " " << *value << " is invalid (expected " << expected << ")";
         return bad_input(msg.str(), field);
     }
     return ok();
@@ -31,16 +31,14 @@ Status check_optional(const std::optional<double>& value, const char* name, cons
 
 Status check_plain_bound(const std::optional<double>& plain_bound)
 {
-    return check_optional(plain_bound, "--shortcut", "TableChoiceOptions::plain_bound",
+    return check_optional(plain_bound, "TableChoiceOptions::plain_bound",
                           "a CIEDE2000 difference >= 0; 0 turns it off");
 }
 
 Status choose_surface_table(const Scene& scene, std::size_t surface, ColorLayer& layer,
                             const TableChoiceOptions& options)
 {
-    if (auto st = check_optional(options.tolerance, "--tolerance", "TableChoiceOptions::tolerance",
-                                 "a CIEDE2000 difference > 0");
-        !st)
+    if (auto st = check_optional(options.tolerance, "TableChoiceOptions::tolerance", "a CIEDE2000 difference > 0"); !st)
         return st;
     if (auto st = check_plain_bound(options.plain_bound); !st) return st;
     if (surface >= scene.surfaces.size())

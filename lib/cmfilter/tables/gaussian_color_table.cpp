@@ -57,16 +57,16 @@ double TableAxes::sigma_at(int j) const
 Expected<TableAxes> make_table_axes(const ColorMap& map, const GaussianColorTableOptions& options)
 {
     constexpr int kMaxNodes = 1 << 16;
-    auto check_count = [&](int n, const char* name, const char* field) -> Status {
+    auto check_count = [&](int n, const char* field) -> Status {
         if (n < 2 || n > kMaxNodes) {
             std::ostringstream msg;
-            msg << name << " " << n << " is out of range (expected 2.." << kMaxNodes << " samples on the axis)";
+            msg << field << " " << n << " is out of range (expected 2.." << kMaxNodes << " samples on the axis)";
             return bad_input(msg.str(), field);
         }
         return ok();
     };
-    if (auto st = check_count(options.values, "--values", "GaussianColorTableOptions::values"); !st) return st.error();
-    if (auto st = check_count(options.sigmas, "--sigmas", "GaussianColorTableOptions::sigmas"); !st) return st.error();
+    if (auto st = check_count(options.values, "GaussianColorTableOptions::values"); !st) return st.error();
+    if (auto st = check_count(options.sigmas, "GaussianColorTableOptions::sigmas"); !st) return st.error();
 
     TableAxes axes;
     axes.values = options.values;
@@ -78,14 +78,14 @@ Expected<TableAxes> make_table_axes(const ColorMap& map, const GaussianColorTabl
     axes.sigma_max = options.sigma_max.value_or((map.vmax - map.vmin) / 4.0);
     if (!std::isfinite(axes.sigma_max) || axes.sigma_max <= 0) {
         std::ostringstream msg;
-        msg << "--sigma-max " << axes.sigma_max << " is invalid (expected a finite value > 0)";
+        msg << "GaussianColorTableOptions::sigma_max " << axes.sigma_max << " is invalid (expected a finite value > 0)";
         return bad_input(msg.str(), "GaussianColorTableOptions::sigma_max");
     }
     if (map.wrap == WrapMode::Clamp) {
         axes.margin = options.margin.value_or(3.0 * axes.sigma_max);
         if (!std::isfinite(axes.margin) || axes.margin < 0) {
             std::ostringstream msg;
-            msg << "--margin " << axes.margin << " is invalid (expected a finite value >= 0)";
+            msg << "GaussianColorTableOptions::margin " << axes.margin << " is invalid (expected a finite value >= 0)";
             return bad_input(msg.str(), "GaussianColorTableOptions::margin");
         }
     }

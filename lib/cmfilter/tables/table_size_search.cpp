@@ -39,7 +39,8 @@ Status check_options(const TableSizeSearchOptions& o)
 {
     if (!std::isfinite(o.tolerance) || o.tolerance <= 0) {
         std::ostringstream msg;
-        msg << "--tolerance " << o.tolerance << " is invalid (expected a CIEDE2000 difference > 0)";
+        msg << "TableSizeSearchOptions::tolerance " << o.tolerance
+            << " is invalid (expected a CIEDE2000 difference > 0)";
         return bad_input(msg.str(), "TableSizeSearchOptions::tolerance");
     }
     if (!(o.quantile > 0 && o.quantile <= 1)) {
@@ -194,7 +195,7 @@ private:
         const std::string stat = quantile_name(options_.quantile);
         std::ostringstream msg;
         msg << "no table up to " << options_.value_counts.back() << " values x " << options_.sigma_counts.back()
-            << " sigmas meets --tolerance " << options_.tolerance << " (CIEDE2000 " << stat << " at "
+            << " sigmas meets the tolerance " << options_.tolerance << " (CIEDE2000 " << stat << " at "
             << options_.search_samples << " random (v, sigma), sigma_max " << sigma_max_ << ")";
         if (lowest) {
             msg << ": the lowest " << stat << " reached is " << lowest->error << ", by " << describe(lowest->size);

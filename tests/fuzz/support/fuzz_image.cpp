@@ -159,7 +159,8 @@ private:
     {
         const FuzzSubimage& sub = image_.subimages[static_cast<std::size_t>(subimage_)];
         const std::uint64_t nch = std::uint64_t(m_spec.nchannels);
-        std::vector<float> values(static_cast<std::size_t>(count * nch));
+        std::vector<float>& values = values_;  // reused: a tile row of tiny tiles is many calls
+        values.resize(static_cast<std::size_t>(count * nch));
         for (std::uint64_t i = 0; i < count * nch; ++i)
             values[i] = sub.values.empty() ? 0.0f : sub.values[(first * nch + i) % sub.values.size()];
         OIIO::convert_pixel_values(OIIO::TypeDesc::FLOAT, values.data(), m_spec.format, data,
@@ -169,6 +170,7 @@ private:
     FuzzImage image_;
     int subimage_ = -1;
     int level_ = -1;
+    mutable std::vector<float> values_;
 };
 
 OIIO::ImageInput* create_fuzz_image_input() { return new FuzzImageInput; }

@@ -38,7 +38,7 @@ TEST_CASE("an 8-bit PNG is decoded as sRGB and laid over the domain")
     CHECK(loaded->provenance.sha256.size() == 64);
 }
 
-TEST_CASE("a float EXR is linear by default, and --colorspace overrides the file")
+TEST_CASE("a float EXR is linear by default, and ColorMapLoadOptions::colorspace overrides the file")
 {
     const std::string path = temp_dir() + "/lin.exr";
     const float px[] = {0.5f, 0.25f, 2.0f, 1.0f, 0.0f, 0.125f};
@@ -56,7 +56,7 @@ TEST_CASE("a float EXR is linear by default, and --colorspace overrides the file
     // Row 1 of the AP1 -> Rec.709 matrix applied to (0.5, 0.25, 2.0).
     CHECK(acescg->map.texels[0].g ==
           doctest::Approx(-0.1302564 * 0.5 + 1.1408047 * 0.25 - 0.0105483 * 2.0).epsilon(1e-4));
-    CHECK(acescg->provenance.colorspace_rule == "--colorspace");
+    CHECK(acescg->provenance.colorspace_rule == "ColorMapLoadOptions::colorspace");
 }
 
 TEST_CASE("rows and columns of a larger image, grey replicated")
@@ -67,9 +67,9 @@ TEST_CASE("rows and columns of a larger image, grey replicated")
     write_image(path, 4, 3, 1, OIIO::TypeDesc::FLOAT, px.data());
     ColorMapLoadOptions opt;
     opt.path = path;
-    CHECK(
-        load_color_map(opt, cmfilter_test::builtin_color_config()).error().message.find("pass --row N or --column N") !=
-        std::string::npos);
+    CHECK(load_color_map(opt, cmfilter_test::builtin_color_config())
+              .error()
+              .message.find("pass ColorMapLoadOptions::row N or ColorMapLoadOptions::column N") != std::string::npos);
     opt.row = 1;
     auto row = load_color_map(opt, cmfilter_test::builtin_color_config());
     REQUIRE(row);

@@ -215,7 +215,7 @@ TEST_CASE("compare: --colorspace-a/-b override the file's colour space")
     auto c = compare_images(options, cmfilter_test::builtin_color_config());
     REQUIRE(c);
     CHECK(c->a.colorspace == "sRGB Encoded Rec.709");
-    CHECK(c->a.colorspace_rule == "--colorspace-a");
+    CHECK(c->a.colorspace_rule == "ImageComparisonOptions::colorspace_a");
     CHECK(c->b.colorspace == "Linear Rec.709");
     // A is decoded as sRGB (0.5 -> 0.21404), B is taken as linear 0.5. Tolerance
     // 1e-6: float32 decoding in OpenColorIO (relative ~6e-8).

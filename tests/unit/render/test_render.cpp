@@ -194,7 +194,7 @@ TEST_CASE("render rejects sample counts out of range and mismatched materials")
     options.samples = 0;
     auto zero = render(s.scene, s.materials, options);
     REQUIRE_FALSE(zero);
-    CHECK(zero.error().message.find("--spp 0 is out of range") != std::string::npos);
+    CHECK(zero.error().message.find("RenderOptions::samples 0 is out of range") != std::string::npos);
     options.samples = 4;
     auto none = render(s.scene, {}, options);
     REQUIRE_FALSE(none);

@@ -142,12 +142,12 @@ TEST_CASE("bad tolerance and shortcut values are refused, naming the option")
     options.tolerance = -1.0;
     auto st = choose_surface_table(*scene, 0, materials[0], options);
     REQUIRE_FALSE(st);
-    CHECK(st.error().message.find("--tolerance -1 is invalid") != std::string::npos);
+    CHECK(st.error().message.find("TableChoiceOptions::tolerance -1 is invalid") != std::string::npos);
     options.tolerance.reset();
     options.plain_bound = std::nan("");
     st = choose_surface_table(*scene, 0, materials[0], options);
     REQUIRE_FALSE(st);
-    CHECK(st.error().message.find("--shortcut nan is invalid") != std::string::npos);
+    CHECK(st.error().message.find("TableChoiceOptions::plain_bound nan is invalid") != std::string::npos);
     options.plain_bound.reset();
     st = choose_surface_table(*scene, 3, materials[0], options);
     REQUIRE_FALSE(st);

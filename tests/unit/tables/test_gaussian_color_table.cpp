@@ -176,16 +176,19 @@ TEST_CASE("invalid table options are rejected with the value named")
     auto r = GaussianColorTable::bake(p.map, opt);
     REQUIRE(!r);
     CHECK(r.error().kind == ErrorKind::BadInput);
-    CHECK(r.error().message.find("--values 1") != std::string::npos);
+    CHECK(r.error().message.find("GaussianColorTableOptions::values 1") != std::string::npos);
     opt = {};
     opt.sigmas = 0;
-    CHECK(GaussianColorTable::bake(p.map, opt).error().message.find("--sigmas 0") != std::string::npos);
+    CHECK(GaussianColorTable::bake(p.map, opt).error().message.find("GaussianColorTableOptions::sigmas 0") !=
+          std::string::npos);
     opt = {};
     opt.sigma_max = -0.5;
-    CHECK(GaussianColorTable::bake(p.map, opt).error().message.find("--sigma-max -0.5") != std::string::npos);
+    CHECK(GaussianColorTable::bake(p.map, opt).error().message.find("GaussianColorTableOptions::sigma_max -0.5") !=
+          std::string::npos);
     opt.sigma_max = std::nan("");
     CHECK(!GaussianColorTable::bake(p.map, opt));
     opt = {};
     opt.margin = -1;
-    CHECK(GaussianColorTable::bake(p.map, opt).error().message.find("--margin -1") != std::string::npos);
+    CHECK(GaussianColorTable::bake(p.map, opt).error().message.find("GaussianColorTableOptions::margin -1") !=
+          std::string::npos);
 }
