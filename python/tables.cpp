@@ -7,6 +7,7 @@
 #include "cmfilter/colormap/color_map_loading.h"
 #include "cmfilter/tables/gaussian_color_table_file.h"
 #include "cmfilter/tables/gaussian_convolution.h"
+#include "cmfilter/tables/table_color_map.h"
 
 #include <pybind11/stl.h>
 
@@ -32,6 +33,67 @@ void store(const Rgb& c, double* out)
     out[0] = c.r;
     out[1] = c.g;
     out[2] = c.b;
+}
+
+// C0(v) on an array: (..., 3).
+py::array_t<double> map_colors(const ColorMap& map, const py::object& v)
+{
+    Broadcast b = broadcast({v});
+    const double* vs = b.arrays[0].data();
+    return rgb_per_element(b, 1, [&](std::size_t i, double* out) { store(map.evaluate(vs[i]), out); });
+}
+
+// The exact T(v, sigma) of eq. 10 on arrays that broadcast: (..., 3), one
+// convolution built per run of equal sigmas.
+py::array_t<double> exact_colors(const ColorMap& map, const py::object& v, const py::object& sigma)
+{
+    Broadcast b = broadcast({v, sigma});
+    const double *vs = b.arrays[0].data(), *ss = b.arrays[1].data();
+    for (std::size_t i = 0; i < b.size; ++i)
+        if (!(ss[i] >= 0)) bad_argument("sigma " + std::to_string(ss[i]) + " is invalid (expected >= 0)");
+    std::vector<double> out(3 * b.size);
+    {
+        py::gil_scoped_release release;
+        std::optional<GaussianConvolution> conv;
+        double conv_sigma = -1;
+        for (std::size_t i = 0; i < b.size; ++i) {
+            if (ss[i] == 0) {
+                store(map.evaluate(vs[i]), out.data() + 3 * i);
+                continue;
+            }
+            if (!conv || ss[i] != conv_sigma) conv.emplace(map, conv_sigma = ss[i]);
+            store((*conv)(vs[i]), out.data() + 3 * i);
+        }
+    }
+    return owning_array(std::move(out), with_trailing(b.shape, {3}));
+}
+
+// T(mean, sigma) looked up bilinearly in the table, on arrays that broadcast.
+py::array_t<double> table_colors(const LoadedGaussianColorTable& t, const py::object& mean, const py::object& sigma,
+                                 int threads)
+{
+    Broadcast b = broadcast({mean, sigma});
+    const double *ms = b.arrays[0].data(), *ss = b.arrays[1].data();
+    return rgb_per_element(b, threads, [&](std::size_t i, double* out) { store(t.table.lookup(ms[i], ss[i]), out); });
+}
+
+// The colour map a table was baked from, from its metadata.
+LoadedColorMap table_map(const LoadedGaussianColorTable& t, const std::string& map_override,
+                         const std::string& ocio_config)
+{
+    TableColorMapOptions options;
+    options.table_path = "table of " + t.info.source.path;
+    options.map_override = map_override;
+    const ColorConfig config = load_config(ocio_config);
+    TableColorMap map = [&] {
+        py::gil_scoped_release release;
+        return unwrap(load_table_color_map(t, options, config));
+    }();
+    if (!map.warnings.empty()) {
+        py::object warn = py::module_::import("warnings").attr("warn");
+        for (const auto& w : map.warnings) warn(w);
+    }
+    return std::move(map.map);
 }
 
 py::dict provenance_dict(const ColorMapProvenance& p)
@@ -106,36 +168,11 @@ void bind_tables(py::module_& m)
         .def_property_readonly("wrap", [](const LoadedColorMap& c) { return std::string(to_string(c.map.wrap)); })
         .def_property_readonly("provenance", [](const LoadedColorMap& c) { return provenance_dict(c.provenance); })
         .def(
-            "evaluate",
-            [](const LoadedColorMap& c, py::object v) {
-        Broadcast b = broadcast({v});
-        const double* vs = b.arrays[0].data();
-        return rgb_per_element(b, 1, [&](std::size_t i, double* out) { store(c.map.evaluate(vs[i]), out); });
-            },
-            py::arg("v"), "C0(v): (..., 3) float64")
+            "evaluate", [](const LoadedColorMap& c, py::object v) { return map_colors(c.map, v); }, py::arg("v"),
+            "C0(v): (..., 3) float64")
         .def(
             "convolve",
-            [](const LoadedColorMap& c, py::object v, py::object sigma) {
-        Broadcast b = broadcast({v, sigma});
-        const double *vs = b.arrays[0].data(), *ss = b.arrays[1].data();
-        for (std::size_t i = 0; i < b.size; ++i)
-            if (!(ss[i] >= 0)) bad_argument("sigma " + std::to_string(ss[i]) + " is invalid (expected >= 0)");
-        std::vector<double> out(3 * b.size);
-        {
-            py::gil_scoped_release release;
-            std::optional<GaussianConvolution> conv;
-            double conv_sigma = -1;
-            for (std::size_t i = 0; i < b.size; ++i) {
-                if (ss[i] == 0) {
-                    store(c.map.evaluate(vs[i]), out.data() + 3 * i);
-                    continue;
-                }
-                if (!conv || ss[i] != conv_sigma) conv.emplace(c.map, conv_sigma = ss[i]);
-                store((*conv)(vs[i]), out.data() + 3 * i);
-            }
-        }
-        return owning_array(std::move(out), with_trailing(b.shape, {3}));
-            },
+            [](const LoadedColorMap& c, py::object v, py::object sigma) { return exact_colors(c.map, v, sigma); },
             py::arg("v"), py::arg("sigma"),
             "The exact T(v, sigma) = (C0 * N(0, sigma^2))(v) of eq. 10, no table: (..., 3) float64. "
             "Fastest when equal sigmas are adjacent.");
@@ -161,16 +198,28 @@ void bind_tables(py::module_& m)
         check(write_gaussian_color_table(path, t.table, info));
             },
             py::arg("path"), "Writes the table as a float OpenEXR with its cmfilter:* metadata, atomically.")
+        .def("lookup", &table_colors, py::arg("mean"), py::arg("sigma"), py::arg("threads") = 0,
+             "Bilinear T(mean, sigma) on arrays that broadcast together: (..., 3) float64.")
+        .def("colormap", &table_map, py::kw_only(), py::arg("map_override") = "", py::arg("ocio_config") = "",
+             "The colour map C0 the table was baked from, rebuilt from its metadata (the source image, checked by "
+             "its SHA-256), or from map_override.")
         .def(
-            "lookup",
-            [](const LoadedGaussianColorTable& t, py::object mean, py::object sigma, int threads) {
+            "color",
+            [](const LoadedGaussianColorTable& t, const py::object& mean, const py::object& sigma,
+               const std::string& method, const LoadedColorMap* colormap, int threads) {
+        if (method == "gaussian") return table_colors(t, mean, sigma, threads);
+        if (method != "naive" && method != "gaussian-exact")
+            bad_argument("method '" + method + "' is unknown (expected naive, gaussian or gaussian-exact)");
+        const LoadedColorMap map = colormap ? *colormap : table_map(t, "", "");
         Broadcast b = broadcast({mean, sigma});
-        const double *ms = b.arrays[0].data(), *ss = b.arrays[1].data();
-        return rgb_per_element(b, threads,
-                               [&](std::size_t i, double* out) { store(t.table.lookup(ms[i], ss[i]), out); });
+        if (method == "naive") return map_colors(map.map, b.arrays[0]);
+        return exact_colors(map.map, b.arrays[0], b.arrays[1]);
             },
-            py::arg("mean"), py::arg("sigma"), py::arg("threads") = 0,
-            "Bilinear T(mean, sigma) on arrays that broadcast together: (..., 3) float64.")
+            py::arg("mean"), py::arg("sigma"), py::kw_only(), py::arg("method") = "gaussian",
+            py::arg("colormap") = py::none(), py::arg("threads") = 0,
+            "The colour of footprints of (mean, sigma) by a method: naive C0(mean), gaussian T(mean, sigma) from "
+            "the table, gaussian-exact the exact convolution (eq. 10); C0 is `colormap`, else the table's own "
+            "(colormap()). (..., 3) float64.")
         .def_property_readonly(
             "data",
             [](py::object self) {

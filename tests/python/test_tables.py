@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: Apache-2.0
 # Colour maps and Gaussian colour tables against SciPy: the map decoded from
-# the PNG here, T(v, sigma) of eq. 10 by adaptive quadrature.
+# the PNG here, T(v, sigma) of eq. 10 by SciPy's Simpson rule on a fine grid.
 import numpy as np
 import pytest
 import scipy.integrate
@@ -46,6 +46,26 @@ def test_table_lookup_matches_quadrature_of_eq10(luts):
     j, i = 40, 100
     np.testing.assert_allclose(table.data[j, i],
                                quadrature_T(texels, 0, 1, table.value_nodes[i], table.sigma_nodes[j]), atol=5e-4)
+
+
+def test_methods_on_arrays_of_mean_and_sigma(luts, tmp_path):
+    texels = linear_colormap(luts / "terrain.png")
+    table = cmfilter.ColorTable.bake(cmfilter.ColorMap.load(str(luts / "terrain.png")), values=256, sigmas=32)
+    table.write(str(tmp_path / "t.exr"))
+    table = cmfilter.ColorTable.read(str(tmp_path / "t.exr"))  # C0 comes back from the file's metadata
+    mean = np.array([[0.1, 0.35], [0.42, 0.9]])
+    sigma = np.array([0.0, 0.05])
+    naive = table.color(mean, sigma, method="naive")
+    assert naive.shape == (2, 2, 3)
+    np.testing.assert_allclose(naive, c0(texels, 0, 1, mean), atol=2e-4)
+    exact = table.color(mean, sigma, method="gaussian-exact")
+    expected = [[quadrature_T(texels, 0, 1, m, s) if s > 0 else c0(texels, 0, 1, m) for m, s in zip(row, sigma)]
+                for row in mean]
+    np.testing.assert_allclose(exact, expected, atol=5e-4)
+    np.testing.assert_array_equal(table.color(mean, sigma), table.lookup(mean, sigma))
+    np.testing.assert_allclose(table.colormap().texels, texels, atol=2e-4)
+    with pytest.raises(cmfilter.Error, match="method 'box'"):
+        table.color(mean, sigma, method="box")
 
 
 def test_lookup_broadcasts_and_keeps_shape(luts):
