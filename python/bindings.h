@@ -97,6 +97,9 @@ void for_each_element(std::size_t count, int threads, Body&& body)
 // The shape followed by `extra` trailing extents.
 std::vector<py::ssize_t> with_trailing(std::vector<py::ssize_t> shape, std::initializer_list<py::ssize_t> extra);
 
+// Each of the library's warnings as a Python UserWarning.
+void warn_all(const std::vector<std::string>& warnings);
+
 // The config a call names: a path, else $OCIO, else the one built into the
 // library (as the cmfilter command chooses).
 ColorConfig load_config(const std::string& path);

@@ -66,6 +66,13 @@ std::vector<py::ssize_t> with_trailing(std::vector<py::ssize_t> shape, std::init
     return shape;
 }
 
+void warn_all(const std::vector<std::string>& warnings)
+{
+    if (warnings.empty()) return;
+    py::object warn = py::module_::import("warnings").attr("warn");
+    for (const auto& w : warnings) warn(w);
+}
+
 ColorConfig load_config(const std::string& path)
 {
     std::string chosen = path;

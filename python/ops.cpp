@@ -116,10 +116,7 @@ void bind_ops(py::module_& m)
             py::gil_scoped_release release;
             return unwrap(apply_filter(options, config));
         }();
-        if (!image.warnings.empty()) {
-            py::object warn = py::module_::import("warnings").attr("warn");
-            for (const auto& w : image.warnings) warn(w);
-        }
+        warn_all(image.warnings);
         return owning_array(std::move(image.rgb), {image.height, image.width, 3});
         },
         py::arg("moments"), py::arg("table"), py::kw_only(), py::arg("lod") = 0.0, py::arg("method") = "gaussian",

@@ -89,10 +89,7 @@ LoadedColorMap table_map(const LoadedGaussianColorTable& t, const std::string& m
         py::gil_scoped_release release;
         return unwrap(load_table_color_map(t, options, config));
     }();
-    if (!map.warnings.empty()) {
-        py::object warn = py::module_::import("warnings").attr("warn");
-        for (const auto& w : map.warnings) warn(w);
-    }
+    warn_all(map.warnings);
     return std::move(map.map);
 }
 
