@@ -9,7 +9,7 @@
 // detail below 0 and beyond the pyramid, NaN. The tolerances are the
 // measured float32 rounding of each path (docs/shaders.md).
 #define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
-#include "gl_compute.h"
+#include "headless_gl.h"
 
 #include "cmfilter/colormap/color_map_loading.h"
 #include "cmfilter/io/image_reading.h"

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // A headless OpenGL 4.5 core context through EGL (Mesa's surfaceless
-// platform: llvmpipe on a machine without a GPU) and the little a check of
-// shaders/ needs: compute programs built from shaders/kernels/ with their
-// #include lines expanded from shaders/, storage buffers, float textures.
+// platform: llvmpipe on a machine without a GPU) and the little the
+// real-time example and the checks of shaders/ (tests/shaders/) need:
+// programs built from GLSL whose #include lines name files of shaders/,
+// storage buffers, float textures.
 #pragma once
 
 #define GL_GLEXT_PROTOTYPES 1

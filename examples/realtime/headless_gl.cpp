@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "gl_compute.h"
+#include "headless_gl.h"
 
 #include <EGL/eglext.h>
 
