@@ -136,6 +136,18 @@ void dispatch(GLuint program, std::size_t count)
     glFinish();
 }
 
+std::vector<float> run_kernel(GLuint program, const std::vector<float>& points, std::size_t invocations,
+                              std::size_t result_floats, const void* parameters, std::size_t parameter_bytes)
+{
+    const GLuint buffers[3] = {storage_buffer(0, points.size() * sizeof(float), points.data()),
+                               storage_buffer(1, result_floats * sizeof(float), nullptr),
+                               storage_buffer(2, parameter_bytes, parameters)};
+    dispatch(program, invocations);
+    std::vector<float> result = read_storage_buffer(buffers[1], result_floats);
+    glDeleteBuffers(3, buffers);
+    return result;
+}
+
 GLuint float_texture(GLuint unit, const std::vector<TextureLevel>& levels, int channels, GLenum wrap_s, GLenum wrap_t,
                      GLenum min_filter, GLenum mag_filter)
 {

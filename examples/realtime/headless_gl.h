@@ -49,6 +49,13 @@ std::vector<float> read_storage_buffer(GLuint buffer, std::size_t floats);
 // its writes to storage buffers.
 void dispatch(GLuint program, std::size_t count);
 
+// Runs a compute kernel of shaders/kernels/ once: `points` in the storage
+// buffer at binding 0, `result_floats` zeros at binding 1, the parameter
+// block at binding 2, over `invocations` invocations; returns binding 1's
+// floats and deletes the three buffers.
+std::vector<float> run_kernel(GLuint program, const std::vector<float>& points, std::size_t invocations,
+                              std::size_t result_floats, const void* parameters, std::size_t parameter_bytes);
+
 struct TextureLevel {
     int width = 0, height = 0;
     const float* texels = nullptr;  // width * height * channels, rows in file order

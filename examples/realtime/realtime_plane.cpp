@@ -9,10 +9,10 @@
 // (examples/scenes/plane-image-terrain.json). Its material is prepared by the
 // library as `render` prepares it (the moment pyramid baked, the colour
 // table chosen), then uploaded as textures.
+#include "artefact_textures.h"
 #include "headless_gl.h"
 
 #include "cmfilter/color/color_config.h"
-#include "cmfilter/io/image_reading.h"
 #include "cmfilter/scene/camera.h"
 #include "cmfilter/scene/scene_loading.h"
 #include "cmfilter/scene/scene_materials.h"
@@ -89,21 +89,11 @@ int run(int argc, char** argv)
     // The moment pyramid's levels, as its file holds them (periodic: render
     // bakes texture drivers with --wrap periodic).
     const MomentTexture& moments = driver->texture.moments();
-    auto in = open_image_input(moments.path());
-    if (!in) throw std::runtime_error(in.error().message);
-    std::vector<std::vector<float>> levels;
-    std::vector<cmfilter_gl::TextureLevel> level_views;
-    for (int k = 0; k < moments.info().levels; ++k) {
-        if (!(*in)->seek_subimage(0, k)) throw std::runtime_error(moments.path() + ": no MIP level " + std::to_string(k));
-        const OIIO::ImageSpec& spec = (*in)->spec();
-        levels.emplace_back(static_cast<std::size_t>(spec.width) * spec.height * 2);
-        if (!read_float_pixels(**in, 0, k, 0, 2, levels.back().data()))
-            throw std::runtime_error(moments.path() + ": cannot read MIP level " + std::to_string(k));
-        level_views.push_back({spec.width, spec.height, nullptr});
-    }
-    for (std::size_t k = 0; k < levels.size(); ++k) level_views[k].texels = levels[k].data();
+    const cmfilter_gl::MomentLevels levels = cmfilter_gl::read_moment_levels(moments.path());
+    if (static_cast<int>(levels.levels.size()) != moments.info().levels)
+        throw std::runtime_error(moments.path() + ": the file's MIP levels disagree with cmfilter:levels");
     const GLenum wrap = moments.info().wrap == TextureWrap::Periodic ? GL_REPEAT : GL_CLAMP_TO_EDGE;
-    cmfilter_gl::float_texture(0, level_views, 2, wrap, wrap, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
+    cmfilter_gl::float_texture(0, levels.levels, 2, wrap, wrap, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
     // The colour table render chose for the material, and the map C0.
     const GaussianColorTable& table = material.color.table;
     const TableAxes& ax = table.axes();
@@ -114,10 +104,7 @@ int run(int argc, char** argv)
     for (const Rgb& c : material.color.map.texels) put(map, c);
     const ColorMap& c0 = material.color.map;
     cmfilter_gl::float_texture(2, {{static_cast<int>(c0.texels.size()), 1, map.data()}}, 4,
-                               c0.wrap == WrapMode::Repeat   ? GL_REPEAT
-                               : c0.wrap == WrapMode::Mirror ? GL_MIRRORED_REPEAT
-                                                             : GL_CLAMP_TO_EDGE,
-                               GL_CLAMP_TO_EDGE, GL_LINEAR, GL_LINEAR);
+                               cmfilter_gl::color_map_wrap(c0.wrap), GL_CLAMP_TO_EDGE, GL_LINEAR, GL_LINEAR);
 
     // The uniform blocks (std140: vec4s, then the scalars packed).
     const Camera::ImagePlane plane = camera->image_plane();
@@ -144,26 +131,15 @@ int run(int argc, char** argv)
     std::memcpy(&frame[frame.size() - 2], ints, sizeof ints);
     frame.push_back(static_cast<float>(moments.info().width));
     frame.resize((frame.size() + 3) / 4 * 4);
-    struct {
-        float domain_min, domain_max, value_first, value_last, sigma_max;
-        std::int32_t values, sigmas, wrap, sigma_spacing;
-        float reference;
-        std::int32_t levels;
-    } material_block{static_cast<float>(ax.vmin),
-                     static_cast<float>(ax.vmax),
-                     static_cast<float>(ax.value_first()),
-                     static_cast<float>(ax.value_last()),
-                     static_cast<float>(ax.sigma_max),
-                     ax.values,
-                     ax.sigmas,
-                     ax.wrap == WrapMode::Clamp ? 0 : ax.wrap == WrapMode::Mirror ? 1 : 2,
-                     ax.spacing == SigmaSpacing::Sqrt ? 1 : 0,
-                     static_cast<float>(moments.reference()),
-                     moments.info().levels};
-    // std140 puts the second struct member of the block at a multiple of 16.
+    // Material: CmfColorTable, then CmfMomentPyramid at the next multiple
+    // of 16 (std140 aligns a struct member to 16).
+    const cmfilter_gl::ColorTableBlock table_block = cmfilter_gl::color_table_block(ax);
+    const float reference = static_cast<float>(moments.reference());
+    const std::int32_t level_count = moments.info().levels;
     std::vector<char> material_bytes(64, 0);
-    std::memcpy(material_bytes.data(), &material_block, 36);
-    std::memcpy(material_bytes.data() + 48, &material_block.reference, 8);
+    std::memcpy(material_bytes.data(), &table_block, sizeof table_block);
+    std::memcpy(material_bytes.data() + 48, &reference, 4);
+    std::memcpy(material_bytes.data() + 52, &level_count, 4);
     GLuint blocks[2];
     glCreateBuffers(2, blocks);
     glNamedBufferStorage(blocks[0], static_cast<GLsizeiptr>(frame.size() * sizeof(float)), frame.data(), 0);
@@ -178,8 +154,8 @@ int run(int argc, char** argv)
                                "}\n";
     const GLuint program = cmfilter_gl::build_program(
         {{GL_VERTEX_SHADER, vertex},
-         {GL_FRAGMENT_SHADER,
-          cmfilter_gl::expand_includes(std::string(CMFILTER_EXAMPLE_DIR) + "/plane_filter.frag", CMFILTER_SHADER_DIR)}});
+         {GL_FRAGMENT_SHADER, cmfilter_gl::expand_includes(std::string(CMFILTER_EXAMPLE_DIR) + "/plane_filter.frag",
+                                                           CMFILTER_SHADER_DIR)}});
 
     GLuint target = 0, framebuffer = 0, vao = 0;
     glCreateTextures(GL_TEXTURE_2D, 1, &target);
@@ -200,8 +176,8 @@ int run(int argc, char** argv)
     draw();  // the first frame compiles the shader for the driver
     const auto start = std::chrono::steady_clock::now();
     for (int f = 0; f < frames; ++f) draw();
-    const double ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() / frames;
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() /
+                      frames;
     std::printf("%s %dx%d: %.2f ms a frame (mean of %d)\n", method.c_str(), width, height, ms, frames);
 
     std::vector<float> rgba(static_cast<std::size_t>(width) * height * 4);

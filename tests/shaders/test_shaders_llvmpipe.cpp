@@ -9,6 +9,7 @@
 // detail below 0 and beyond the pyramid, NaN. The tolerances are the
 // measured float32 rounding of each path (docs/shaders.md).
 #define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
+#include "artefact_textures.h"
 #include "headless_gl.h"
 
 #include "cmfilter/colormap/color_map_loading.h"
@@ -92,30 +93,6 @@ double as_float(double x) { return static_cast<double>(static_cast<float>(x)); }
 // ---------------------------------------------------------------------------
 // Colour tables (eq. 10) and the colour map C0.
 
-struct ColorTableParameters {
-    float domain_min, domain_max, value_first, value_last, sigma_max;
-    std::int32_t values, sigmas, wrap, sigma_spacing;
-};
-
-ColorTableParameters color_table_parameters(const TableAxes& ax)
-{
-    const int wrap = ax.wrap == WrapMode::Clamp ? 0 : ax.wrap == WrapMode::Mirror ? 1 : 2;
-    return {static_cast<float>(ax.vmin),
-            static_cast<float>(ax.vmax),
-            static_cast<float>(ax.value_first()),
-            static_cast<float>(ax.value_last()),
-            static_cast<float>(ax.sigma_max),
-            ax.values,
-            ax.sigmas,
-            wrap,
-            ax.spacing == SigmaSpacing::Sqrt ? 1 : 0};
-}
-
-GLenum gl_wrap(WrapMode wrap)
-{
-    return wrap == WrapMode::Repeat ? GL_REPEAT : wrap == WrapMode::Mirror ? GL_MIRRORED_REPEAT : GL_CLAMP_TO_EDGE;
-}
-
 struct BakedTable {
     LoadedColorMap map;
     LoadedGaussianColorTable table;
@@ -162,14 +139,15 @@ void check_color_table(const std::string& lut, WrapMode wrap, SigmaSpacing spaci
     const ColorMap& map = baked.map.map;
 
     const GLuint program = kernel("cmfilter_color_table");
-    const GLuint table_texture = float_texture(
-        0, {{baked.pixels.width, baked.pixels.height, baked.pixels.pixels.data()}}, 3,
-        gl_wrap(wrap == WrapMode::Repeat ? WrapMode::Repeat : WrapMode::Clamp), GL_CLAMP_TO_EDGE, GL_LINEAR, GL_LINEAR);
+    const GLuint table_texture =
+        float_texture(0, {{baked.pixels.width, baked.pixels.height, baked.pixels.pixels.data()}}, 3,
+                      color_map_wrap(wrap == WrapMode::Repeat ? WrapMode::Repeat : WrapMode::Clamp), GL_CLAMP_TO_EDGE,
+                      GL_LINEAR, GL_LINEAR);
     std::vector<float> map_texels;
     for (const Rgb& c : map.texels)
         for (double v : {c.r, c.g, c.b}) map_texels.push_back(static_cast<float>(v));
     const GLuint map_texture = float_texture(1, {{static_cast<int>(map.texels.size()), 1, map_texels.data()}}, 3,
-                                             gl_wrap(wrap), GL_CLAMP_TO_EDGE, GL_LINEAR, GL_LINEAR);
+                                             color_map_wrap(wrap), GL_CLAMP_TO_EDGE, GL_LINEAR, GL_LINEAR);
 
     // Points: (mean, sigma, colour map value, unused).
     std::vector<float> points;
@@ -198,15 +176,11 @@ void check_color_table(const std::string& lut, WrapMode wrap, SigmaSpacing spaci
     }
 
     const std::size_t count = points.size() / 4;
-    const GLuint in = storage_buffer(0, points.size() * sizeof(float), points.data());
-    const GLuint out = storage_buffer(1, count * 16 * sizeof(float), nullptr);
     struct {
-        ColorTableParameters table;
+        ColorTableBlock table;
         std::int32_t count;
-    } parameters{color_table_parameters(ax), static_cast<std::int32_t>(count)};
-    const GLuint params = storage_buffer(2, sizeof parameters, &parameters);
-    dispatch(program, count);
-    const std::vector<float> result = read_storage_buffer(out, count * 16);
+    } parameters{color_table_block(ax), static_cast<std::int32_t>(count)};
+    const std::vector<float> result = run_kernel(program, points, count, count * 16, &parameters, sizeof parameters);
 
     Tally exact, sampler, map_exact, map_sampler;
     for (std::size_t k = 0; k < count; ++k) {
@@ -226,9 +200,6 @@ void check_color_table(const std::string& lut, WrapMode wrap, SigmaSpacing spaci
             }
         }
     }
-    glDeleteBuffers(1, &in);
-    glDeleteBuffers(1, &out);
-    glDeleteBuffers(1, &params);
     glDeleteTextures(1, &table_texture);
     glDeleteTextures(1, &map_texture);
     glDeleteProgram(program);
@@ -302,24 +273,13 @@ void check_moments(TextureWrap wrap)
     REQUIRE(texture->reachable_levels() == info.levels);
 
     // The levels as a renderer reads them: MIP level k of subimage 0.
-    auto in = open_image_input(pyramid->path());
-    REQUIRE(in);
-    std::vector<std::vector<float>> texels;
-    std::vector<TextureLevel> levels;
-    for (int k = 0; k < info.levels; ++k) {
-        REQUIRE((*in)->seek_subimage(0, k));
-        const OIIO::ImageSpec& spec = (*in)->spec();
-        REQUIRE(spec.nchannels == 2);
-        texels.emplace_back(static_cast<std::size_t>(spec.width) * spec.height * 2);
-        REQUIRE(read_float_pixels(**in, 0, k, 0, 2, texels.back().data()));
-        levels.push_back({spec.width, spec.height, nullptr});
-    }
-    for (int k = 0; k < info.levels; ++k) levels[static_cast<std::size_t>(k)].texels = texels[k].data();
+    const MomentLevels levels = read_moment_levels(pyramid->path());
+    REQUIRE(static_cast<int>(levels.levels.size()) == info.levels);
     const GLenum gl_wrap = wrap == TextureWrap::Periodic ? GL_REPEAT
                            : wrap == TextureWrap::Black  ? GL_CLAMP_TO_BORDER
                                                          : GL_CLAMP_TO_EDGE;
     const GLuint program = kernel("cmfilter_moments");
-    const GLuint tex = float_texture(0, levels, 2, gl_wrap, gl_wrap, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
+    const GLuint tex = float_texture(0, levels.levels, 2, gl_wrap, gl_wrap, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
 
     // Points: (s, t, lod, footprint side for textureGrad).
     std::vector<float> points;
@@ -343,15 +303,11 @@ void check_moments(TextureWrap wrap)
     points.insert(points.end(), {0.3f, 0.6f, kNan, static_cast<float>(1.0 / size)});
 
     const std::size_t count = points.size() / 4;
-    const GLuint pin = storage_buffer(0, points.size() * sizeof(float), points.data());
-    const GLuint out = storage_buffer(1, count * 8 * sizeof(float), nullptr);
     struct {
         float reference;
         std::int32_t levels, count;
     } parameters{static_cast<float>(info.reference), info.levels, static_cast<std::int32_t>(count)};
-    const GLuint params = storage_buffer(2, sizeof parameters, &parameters);
-    dispatch(program, count);
-    const std::vector<float> result = read_storage_buffer(out, count * 8);
+    const std::vector<float> result = run_kernel(program, points, count, count * 8, &parameters, sizeof parameters);
 
     Tally mean, sigma, grad_mean, grad_sigma;
     for (std::size_t k = 0; k < count; ++k) {
@@ -365,9 +321,6 @@ void check_moments(TextureWrap wrap)
         grad_mean.add(result[8 * k + 4], g.mean, where);
         grad_sigma.add(result[8 * k + 6], g.sigma, where);
     }
-    glDeleteBuffers(1, &pin);
-    glDeleteBuffers(1, &out);
-    glDeleteBuffers(1, &params);
     glDeleteTextures(1, &tex);
     glDeleteProgram(program);
     MESSAGE("moments, wrap " << std::string(to_string(wrap)) << ", " << count << " points: mean " << mean.max_error
@@ -452,16 +405,12 @@ TEST_CASE("noise_sigma: sigma(L) of a baked noise sigma table, box and Gaussian 
         points.insert(points.end(), {static_cast<float>(l), 1.0f, 0, 0});
     points.insert(points.end(), {kNan, 1.0f, 0, 0});
     const std::size_t count = points.size() / 4;
-    const GLuint pin = storage_buffer(0, points.size() * sizeof(float), points.data());
-    const GLuint out = storage_buffer(1, count * 8 * sizeof(float), nullptr);
     struct {
         float lod_first, lod_step, base_period;
         std::int32_t lods, count;
     } parameters{static_cast<float>(table.lod_first()), static_cast<float>(table.lod_step()),
                  static_cast<float>(box->base_period), lods, static_cast<std::int32_t>(count)};
-    const GLuint params = storage_buffer(2, sizeof parameters, &parameters);
-    dispatch(program, count);
-    const std::vector<float> result = read_storage_buffer(out, count * 8);
+    const std::vector<float> result = run_kernel(program, points, count, count * 8, &parameters, sizeof parameters);
     Tally sampler, exact, lod_of_width;
     for (std::size_t k = 0; k < count; ++k) {
         const float* p = &points[4 * k];
@@ -473,9 +422,6 @@ TEST_CASE("noise_sigma: sigma(L) of a baked noise sigma table, box and Gaussian 
         exact.add(result[8 * k + 3], g, where);
         lod_of_width.add(result[8 * k + 4], std::log2(p[1] / box->base_period), where);
     }
-    glDeleteBuffers(1, &pin);
-    glDeleteBuffers(1, &out);
-    glDeleteBuffers(1, &params);
     glDeleteTextures(1, &tex);
     glDeleteProgram(program);
     const double global = bake->global.sigma;
@@ -531,17 +477,13 @@ TEST_CASE("height: Lambda, visibility, D_h's moments by the fit and the table, t
     add(0.5, 0.7, 0.3, 1.0, -0.06, 0.008, 50.0, 2.0);
 
     const std::size_t count = points.size() / 8;
-    const GLuint pin = storage_buffer(0, points.size() * sizeof(float), points.data());
-    const GLuint out = storage_buffer(1, count * 16 * sizeof(float), nullptr);
     struct {
-        ColorTableParameters table;
+        ColorTableBlock table;
         float s_max;
         std::int32_t count;
-    } parameters{color_table_parameters(table.axes()), static_cast<float>(moments->s_max()),
+    } parameters{color_table_block(table.axes()), static_cast<float>(moments->s_max()),
                  static_cast<std::int32_t>(count)};
-    const GLuint params = storage_buffer(2, sizeof parameters, &parameters);
-    dispatch(program, count);
-    const std::vector<float> r = read_storage_buffer(out, count * 16);
+    const std::vector<float> r = run_kernel(program, points, count, count * 16, &parameters, sizeof parameters);
 
     Tally lambda, sum, visibility, height_visibility, log_cdf, fit, table_moments, colour;
     // Lambda spans decades: compared relative to max(1, Lambda).
@@ -578,9 +520,6 @@ TEST_CASE("height: Lambda, visibility, D_h's moments by the fit and the table, t
         colour.add(o[13], v * c.g, where);
         colour.add(o[14], v * c.b, where);
     }
-    glDeleteBuffers(1, &pin);
-    glDeleteBuffers(1, &out);
-    glDeleteBuffers(1, &params);
     glDeleteTextures(1, &moment_tex);
     glDeleteTextures(1, &table_tex);
     glDeleteProgram(program);
@@ -639,22 +578,15 @@ TEST_CASE("relight: PTM-RGB, PTM-LRGB, HSH2 and HSH3 fits at lights over the hem
                 used.push_back({as_float(l.x), as_float(l.y), as_float(l.z)});
             }
         const std::size_t count = points.size() / 4;
-        const GLuint pin = storage_buffer(0, points.size() * sizeof(float), points.data());
-        const GLuint out = storage_buffer(1, count * 4 * sizeof(float), nullptr);
         const std::int32_t parameters[4] = {static_cast<std::int32_t>(model), fit.channels, fit.width,
                                             static_cast<std::int32_t>(count)};
-        const GLuint params = storage_buffer(2, sizeof parameters, parameters);
-        dispatch(program, count);
-        const std::vector<float> r = read_storage_buffer(out, count * 4);
+        const std::vector<float> r = run_kernel(program, points, count, count * 4, &parameters, sizeof parameters);
         Tally error;
         for (std::size_t k = 0; k < count; ++k) {
             const auto t = static_cast<std::size_t>(points[4 * k + 3]);
             const std::vector<float> reference = relight(fit, used[k], 1);
             for (int c = 0; c < 3; ++c) error.add(r[4 * k + c], reference[t * 3 + c], point_name(&points[4 * k], 4));
         }
-        glDeleteBuffers(1, &pin);
-        glDeleteBuffers(1, &out);
-        glDeleteBuffers(1, &params);
         glDeleteTextures(1, &tex);
         MESSAGE("relight " << std::string(to_string(model)) << ", " << count << " points: " << error.max_error);
         // Sums of up to 9 unit terms in float32.
@@ -703,17 +635,10 @@ TEST_CASE("coordinate_map: rendering through a coordinate map at full size")
         for (int i = 0; i < level.width; ++i)
             points.insert(points.end(), {static_cast<float>(i), static_cast<float>(j), 0, 0});
     const std::size_t count = points.size() / 4;
-    const GLuint pin = storage_buffer(0, points.size() * sizeof(float), points.data());
-    const GLuint out = storage_buffer(1, count * 4 * sizeof(float), nullptr);
     const std::int32_t parameters = static_cast<std::int32_t>(count);
-    const GLuint params = storage_buffer(2, sizeof parameters, &parameters);
-    dispatch(program, count);
-    const std::vector<float> r = read_storage_buffer(out, count * 4);
+    const std::vector<float> r = run_kernel(program, points, count, count * 4, &parameters, sizeof parameters);
     Tally error;
     for (std::size_t k = 0; k < count * 4; ++k) error.add(r[k], reference->pixels[k], std::to_string(k / 4));
-    glDeleteBuffers(1, &pin);
-    glDeleteBuffers(1, &out);
-    glDeleteBuffers(1, &params);
     glDeleteTextures(1, &map_tex);
     glDeleteTextures(1, &sample_tex);
     glDeleteProgram(program);
@@ -765,8 +690,6 @@ TEST_CASE("slope: D_s's exact moments (eq. 20) and the Gaussian slope colour of 
         add(-0.3, 0.5, t, 2.0, 0.4, 0.0, 0);
     }
     const std::size_t count = points.size() / 8;
-    const GLuint pin = storage_buffer(0, points.size() * sizeof(float), points.data());
-    const GLuint out = storage_buffer(1, count * 8 * sizeof(float), nullptr);
     struct {
         float domain_min, domain_max;
         std::int32_t wrap, points;
@@ -778,9 +701,7 @@ TEST_CASE("slope: D_s's exact moments (eq. 20) and the Gaussian slope colour of 
         parameters.weights[i] = static_cast<float>(rule.weights[i]);
     }
     parameters.count = static_cast<std::int32_t>(count);
-    const GLuint params = storage_buffer(2, sizeof parameters, &parameters);
-    dispatch(program, count);
-    const std::vector<float> r = read_storage_buffer(out, count * 8);
+    const std::vector<float> r = run_kernel(program, points, count, count * 8, &parameters, sizeof parameters);
     Tally moments, colour;
     for (std::size_t k = 0; k < count; ++k) {
         const float* p = &points[8 * k];
@@ -802,9 +723,6 @@ TEST_CASE("slope: D_s's exact moments (eq. 20) and the Gaussian slope colour of 
         colour.add(o[6], c.g, where);
         colour.add(o[7], c.b, where);
     }
-    glDeleteBuffers(1, &pin);
-    glDeleteBuffers(1, &out);
-    glDeleteBuffers(1, &params);
     glDeleteTextures(1, &tex);
     glDeleteProgram(program);
     MESSAGE("slope, " << count << " points: D_s moments " << moments.max_error << ", Gaussian slope colour "
