@@ -47,7 +47,10 @@ GlContext::~GlContext()
 {
     eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
     if (context_ != EGL_NO_CONTEXT) eglDestroyContext(display_, context_);
-    eglTerminate(display_);
+    // The display stays initialised for the process: eglTerminate unloads
+    // Mesa's driver, and LeakSanitizer then reports two 56-byte blocks its
+    // draw path keeps (stacks in an unloaded module, which no suppression can
+    // name). Loaded, they are still reachable and nothing is reported.
     eglReleaseThread();
 }
 

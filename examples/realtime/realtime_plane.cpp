@@ -93,18 +93,20 @@ int run(int argc, char** argv)
     if (static_cast<int>(levels.levels.size()) != moments.info().levels)
         throw std::runtime_error(moments.path() + ": the file's MIP levels disagree with cmfilter:levels");
     const GLenum wrap = moments.info().wrap == TextureWrap::Periodic ? GL_REPEAT : GL_CLAMP_TO_EDGE;
-    cmfilter_gl::float_texture(0, levels.levels, 2, wrap, wrap, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
+    GLuint textures[3];
+    textures[0] = cmfilter_gl::float_texture(0, levels.levels, 2, wrap, wrap, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
     // The colour table render chose for the material, and the map C0.
     const GaussianColorTable& table = material.color.table;
     const TableAxes& ax = table.axes();
-    cmfilter_gl::float_texture(1, {{ax.values, ax.sigmas, table.data().data()}}, 3,
-                               ax.wrap == WrapMode::Repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, GL_LINEAR,
-                               GL_LINEAR);
+    textures[1] = cmfilter_gl::float_texture(1, {{ax.values, ax.sigmas, table.data().data()}}, 3,
+                                             ax.wrap == WrapMode::Repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE,
+                                             GL_CLAMP_TO_EDGE, GL_LINEAR, GL_LINEAR);
     std::vector<float> map;
     for (const Rgb& c : material.color.map.texels) put(map, c);
     const ColorMap& c0 = material.color.map;
-    cmfilter_gl::float_texture(2, {{static_cast<int>(c0.texels.size()), 1, map.data()}}, 4,
-                               cmfilter_gl::color_map_wrap(c0.wrap), GL_CLAMP_TO_EDGE, GL_LINEAR, GL_LINEAR);
+    textures[2] = cmfilter_gl::float_texture(2, {{static_cast<int>(c0.texels.size()), 1, map.data()}}, 4,
+                                             cmfilter_gl::color_map_wrap(c0.wrap), GL_CLAMP_TO_EDGE, GL_LINEAR,
+                                             GL_LINEAR);
 
     // The uniform blocks (std140: vec4s, then the scalars packed).
     const Camera::ImagePlane plane = camera->image_plane();
@@ -182,6 +184,13 @@ int run(int argc, char** argv)
 
     std::vector<float> rgba(static_cast<std::size_t>(width) * height * 4);
     glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, rgba.data());
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &framebuffer);
+    glDeleteTextures(1, &target);
+    glDeleteVertexArrays(1, &vao);
+    glDeleteProgram(program);
+    glDeleteBuffers(2, blocks);
+    glDeleteTextures(3, textures);
     // GL's row 0 is the bottom one: the image's rows top first, RGB.
     std::vector<float> rgb(static_cast<std::size_t>(width) * height * 3);
     for (int y = 0; y < height; ++y)
