@@ -385,6 +385,13 @@ void comp_main()
     float param_1 = a.z;
     float param_2 = a.w;
     CmfSlopeGaussian m = cmf_slope_filtering_moments(param, param_1, param_2);
+    float nodes[16];
+    float weights[16];
+    for (int i = 0; i < 16; i++)
+    {
+        nodes[i] = asfloat(parameters.Load(i * 4 + 16));
+        weights[i] = asfloat(parameters.Load(i * 4 + 80));
+    }
     float param_3 = asfloat(parameters.Load(0));
     float param_4 = asfloat(parameters.Load(4));
     int param_5 = int(parameters.Load(8));
@@ -392,60 +399,8 @@ void comp_main()
     float param_7 = a.z;
     float param_8 = a.w;
     int param_9 = int(parameters.Load(12));
-    float _1148[16];
-    [unroll]
-    for (int _4ident = 0; _4ident < 16; _4ident++)
-    {
-        [unroll]
-        for (int _5ident = 0; _5ident < 16; _5ident++)
-        {
-            _1148[_4ident][_5ident] = asfloat(parameters.Load(_5ident * 4 + _4ident * 4 + 16));
-        }
-    }
-    float param_10[16];
-    param_10[0] = _1148[0];
-    param_10[1] = _1148[1];
-    param_10[2] = _1148[2];
-    param_10[3] = _1148[3];
-    param_10[4] = _1148[4];
-    param_10[5] = _1148[5];
-    param_10[6] = _1148[6];
-    param_10[7] = _1148[7];
-    param_10[8] = _1148[8];
-    param_10[9] = _1148[9];
-    param_10[10] = _1148[10];
-    param_10[11] = _1148[11];
-    param_10[12] = _1148[12];
-    param_10[13] = _1148[13];
-    param_10[14] = _1148[14];
-    param_10[15] = _1148[15];
-    float _1192[16];
-    [unroll]
-    for (int _6ident = 0; _6ident < 16; _6ident++)
-    {
-        [unroll]
-        for (int _7ident = 0; _7ident < 16; _7ident++)
-        {
-            _1192[_6ident][_7ident] = asfloat(parameters.Load(_7ident * 4 + _6ident * 4 + 80));
-        }
-    }
-    float param_11[16];
-    param_11[0] = _1192[0];
-    param_11[1] = _1192[1];
-    param_11[2] = _1192[2];
-    param_11[3] = _1192[3];
-    param_11[4] = _1192[4];
-    param_11[5] = _1192[5];
-    param_11[6] = _1192[6];
-    param_11[7] = _1192[7];
-    param_11[8] = _1192[8];
-    param_11[9] = _1192[9];
-    param_11[10] = _1192[10];
-    param_11[11] = _1192[11];
-    param_11[12] = _1192[12];
-    param_11[13] = _1192[13];
-    param_11[14] = _1192[14];
-    param_11[15] = _1192[15];
+    float param_10[16] = nodes;
+    float param_11[16] = weights;
     float3 colour = cmf_gaussian_slope_color(steepness_map, _steepness_map_sampler, param_3, param_4, param_5, param_6, param_7, param_8, param_9, param_10, param_11);
     results_out.Store4((2u * k) * 16 + 0, asuint(float4(m.mean, m.xx, m.xy)));
     results_out.Store4(((2u * k) + 1u) * 16 + 0, asuint(float4(m.yy, colour)));

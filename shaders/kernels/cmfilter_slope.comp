@@ -33,9 +33,15 @@ void main()
     s.xy = b.y;
     s.yy = b.z;
     CmfSlopeGaussian m = cmf_slope_filtering_moments(s, a.z, a.w);
+    // The rule element by element: spirv-cross's HLSL for a whole-array load
+    // from a storage buffer does not compile.
+    float nodes[CMF_MAX_HERMITE_POINTS], weights[CMF_MAX_HERMITE_POINTS];
+    for (int i = 0; i < CMF_MAX_HERMITE_POINTS; ++i) {
+        nodes[i] = parameters.nodes[i];
+        weights[i] = parameters.weights[i];
+    }
     vec3 colour = cmf_gaussian_slope_color(steepness_map, parameters.domain_min, parameters.domain_max,
-                                           parameters.wrap, s, a.z, a.w, parameters.hermite_points,
-                                           parameters.nodes, parameters.weights);
+                                           parameters.wrap, s, a.z, a.w, parameters.hermite_points, nodes, weights);
     results_out.results[2 * k] = vec4(m.mean, m.xx, m.xy);
     results_out.results[2 * k + 1] = vec4(m.yy, colour);
 }
