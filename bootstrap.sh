@@ -28,6 +28,10 @@ packages=(g++ make cmake pkg-config
 # llvm-symbolizer for their reports; munge and Slurm for the farm example's
 # test, which stands up a single-node cluster of its own (docs/farm.md).
 [ "$mode" = example ] || packages+=(clang libclang-rt-14-dev llvm munge slurm-wlm)
+# The shaders' checks (docs/shaders.md): glslangValidator and spirv-cross,
+# and OpenGL through EGL on Mesa's software rasteriser, llvmpipe (headless).
+[ "$mode" = example ] || packages+=(glslang-tools spirv-cross libegl-dev libopengl-dev libgl-dev libegl-mesa0
+                                   libgl1-mesa-dri)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
