@@ -20,12 +20,18 @@ packages=(g++ make cmake pkg-config
           libopenimageio-dev openimageio-tools libopencolorio-dev libopenexr-dev libimath-dev
           libcli11-dev doctest-dev nlohmann-json3-dev libeigen3-dev libceres-dev gnuplot-nox python3 python3-skimage
           clang-format)
-# The tests: python3-jsonschema validates every command's --json against docs/cmfilter.schema.json.
-[ "$mode" = example ] || packages+=(python3-jsonschema)
+# The tests: python3-jsonschema validates every command's --json against docs/cmfilter.schema.json;
+# the Python module (pybind11) and its tests against NumPy, SciPy and matplotlib (docs/python.md).
+[ "$mode" = example ] || packages+=(python3-jsonschema pybind11-dev python3-dev python3-numpy python3-scipy
+                                   python3-matplotlib python3-pytest)
 # The checked builds: clang with its sanitizer and libFuzzer runtimes, and
 # llvm-symbolizer for their reports; munge and Slurm for the farm example's
 # test, which stands up a single-node cluster of its own (docs/farm.md).
 [ "$mode" = example ] || packages+=(clang libclang-rt-14-dev llvm munge slurm-wlm)
+# The shaders' checks (docs/shaders.md): glslangValidator and spirv-cross,
+# and OpenGL through EGL on Mesa's software rasteriser, llvmpipe (headless).
+[ "$mode" = example ] || packages+=(glslang-tools spirv-cross libegl-dev libopengl-dev libgl-dev libegl-mesa0
+                                   libgl1-mesa-dri)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

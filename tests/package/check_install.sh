@@ -21,6 +21,7 @@ for f in bin/cmfilter \
          "$libdir"/pkgconfig/cmfilter.pc \
          share/cmfilter/luts/README.md share/cmfilter/luts/terrain.png \
          share/cmfilter/ocio/config.ocio \
+         share/cmfilter/shaders/cmfilter_color_table.glsl share/cmfilter/shaders/hlsl/cmfilter_color_table.hlsl \
          share/cmfilter/examples/scenes/plane-fbm-terrain.json \
          share/doc/cmfilter/LICENSE; do
     [ -f "$prefix/$f" ] || fail "$f is not installed"

@@ -17,7 +17,7 @@ quietly() {
     "$@" > "$log" 2>&1 || { cat "$log" >&2; echo "check_shared: '$*' failed" >&2; exit 1; }
 }
 args=(-S "$source" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER="$cxx" -DBUILD_SHARED_LIBS=ON
-      -DCMFILTER_BUILD_TOOLS=OFF -DCMFILTER_BUILD_EXAMPLES=OFF -DCMFILTER_BUILD_TESTS=OFF
+      -DCMFILTER_BUILD_TOOLS=OFF -DCMFILTER_BUILD_EXAMPLES=OFF -DCMFILTER_BUILD_TESTS=OFF -DCMFILTER_PYTHON=OFF
       -DCMAKE_INSTALL_LIBDIR="$libdir")
 [ -z "$launcher" ] || args+=(-DCMAKE_CXX_COMPILER_LAUNCHER="$launcher")
 quietly "$work/configure.log" cmake "${args[@]}"

@@ -5,7 +5,7 @@
 # clang-format it changes nothing and exits 77, the code ctest's
 # SKIP_RETURN_CODE can take for "skipped".
 #   check_format.sh [FILE...]
-# With no FILE: every *.cpp and *.h under lib/, tools/, tests/, examples/ and
+# With no FILE: every *.cpp and *.h under lib/, tools/, python/, tests/, examples/ and
 # luts/. CLANG_FORMAT names the program (default clang-format); the style is
 # measured with clang-format 14, and other versions may format differently.
 set -u
@@ -25,7 +25,7 @@ cd "$root" || exit 2
 if [ $# -gt 0 ]; then
   files=("$@")
 else
-  mapfile -t files < <(find lib tools tests examples luts -type f \( -name '*.cpp' -o -name '*.h' \) | LC_ALL=C sort)
+  mapfile -t files < <(find lib tools python tests examples luts -type f \( -name '*.cpp' -o -name '*.h' \) | LC_ALL=C sort)
 fi
 
 for f in "${files[@]}"; do

@@ -31,6 +31,12 @@ public:
     // The moments for a Lambda sum (NaN and negative read as 0) and sigma_h.
     HeightMoments lookup(double lambda_sum, double sigma_h) const;
 
+    // The nodes (sigma_h = 1) and the end of the s axis, ln(1 + max_lambda_sum):
+    // what a renderer uploads to look it up (shaders/cmfilter_height.glsl).
+    const std::vector<double>& node_means() const { return mean_; }
+    const std::vector<double>& node_sigmas() const { return sigma_; }
+    double s_max() const { return s_max_; }
+
 private:
     HeightMomentTable() = default;
     std::vector<double> mean_, sigma_;  // per node, sigma_h = 1

@@ -100,6 +100,35 @@ Expected<LinearImage> load_linear(const std::string& path, const std::string& re
 
 }  // namespace
 
+RgbDifference measure_rgb_difference(const float* a, const float* b, int width, int height, int threads)
+{
+    const std::size_t pixels = static_cast<std::size_t>(width) * height;
+    RgbDifference result;
+    result.de2000.resize(pixels);
+    std::vector<std::array<double, 3>> row_sq(height);
+    parallel_for(height, threads, [&](int y) {
+        std::array<double, 3> sq{};
+        for (int x = 0; x < width; ++x) {
+            const std::size_t i = static_cast<std::size_t>(y) * width + x;
+            const float* pa = a + 3 * i;
+            const float* pb = b + 3 * i;
+            for (int ch = 0; ch < 3; ++ch) {
+                const double d = static_cast<double>(pa[ch]) - pb[ch];
+                sq[ch] += d * d;
+            }
+            result.de2000[i] = ciede2000_linear_rgb({pa[0], pa[1], pa[2]}, {pb[0], pb[1], pb[2]});
+        }
+        row_sq[y] = sq;
+    });
+    std::array<double, 3> sum{};
+    for (const auto& r : row_sq)
+        for (int ch = 0; ch < 3; ++ch) sum[ch] += r[ch];
+    const double n = static_cast<double>(pixels);
+    for (int ch = 0; ch < 3; ++ch) result.rmse_rgb[ch] = std::sqrt(sum[ch] / n);
+    result.rmse = std::sqrt((sum[0] + sum[1] + sum[2]) / (3.0 * n));
+    return result;
+}
+
 Expected<ImageComparison> compare_images(const ImageComparisonOptions& options, const ColorConfig& config)
 {
     if (!std::isfinite(options.heatmap_max) || !(options.heatmap_max > 0.0)) {
@@ -134,32 +163,11 @@ Expected<ImageComparison> compare_images(const ImageComparisonOptions& options, 
     result.linear_space = config.scene_linear_name();
     result.ocio_config = config.source();
 
-    // Per row: squared differences per channel (summed in double, then across
-    // rows in row order so the result does not depend on the thread count),
-    // and the CIEDE2000 of each pixel.
-    const int w = result.width;
-    std::vector<double> de(result.pixels);
-    std::vector<std::array<double, 3>> row_sq(result.height);
-    parallel_for(result.height, options.threads, [&](int y) {
-        std::array<double, 3> sq{};
-        for (int x = 0; x < w; ++x) {
-            const std::size_t i = static_cast<std::size_t>(y) * w + x;
-            const float* pa = a->rgb.data() + 3 * i;
-            const float* pb = b->rgb.data() + 3 * i;
-            for (int ch = 0; ch < 3; ++ch) {
-                const double d = static_cast<double>(pa[ch]) - pb[ch];
-                sq[ch] += d * d;
-            }
-            de[i] = ciede2000_linear_rgb({pa[0], pa[1], pa[2]}, {pb[0], pb[1], pb[2]});
-        }
-        row_sq[y] = sq;
-    });
-    std::array<double, 3> sum{};
-    for (const auto& r : row_sq)
-        for (int ch = 0; ch < 3; ++ch) sum[ch] += r[ch];
-    const double n = static_cast<double>(result.pixels);
-    for (int ch = 0; ch < 3; ++ch) result.rmse_rgb[ch] = std::sqrt(sum[ch] / n);
-    result.rmse = std::sqrt((sum[0] + sum[1] + sum[2]) / (3.0 * n));
+    RgbDifference d =
+        measure_rgb_difference(a->rgb.data(), b->rgb.data(), result.width, result.height, options.threads);
+    result.rmse = d.rmse;
+    result.rmse_rgb = d.rmse_rgb;
+    std::vector<double>& de = d.de2000;
 
     if (heatmap) {
         HeatmapImage image;

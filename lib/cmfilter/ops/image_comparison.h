@@ -20,6 +20,7 @@
 #include <array>
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace cmfilter {
 
@@ -58,5 +59,16 @@ struct ImageComparison {
 };
 
 Expected<ImageComparison> compare_images(const ImageComparisonOptions& options, const ColorConfig& config);
+
+// What compare_images measures, of two scene-linear RGB images already in
+// memory: width x height pixels each, R, G, B interleaved, top row first.
+// Squared differences are summed per row in double, then across rows in row
+// order, so the result does not depend on the thread count.
+struct RgbDifference {
+    double rmse = 0;                   // over all R, G, B samples
+    std::array<double, 3> rmse_rgb{};  // per channel
+    std::vector<double> de2000;        // per pixel, CIEDE2000
+};
+RgbDifference measure_rgb_difference(const float* a, const float* b, int width, int height, int threads);
 
 }  // namespace cmfilter

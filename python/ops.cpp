@@ -1,0 +1,151 @@
+// SPDX-License-Identifier: Apache-2.0
+// Whole-image operations: `apply` (a driver's filtered colour image at one
+// level of detail, by method) and `compare` (RMSE and CIEDE2000 of two
+// images, files or arrays).
+#include "bindings.h"
+
+#include "cmfilter/ops/filtered_image.h"
+#include "cmfilter/ops/image_comparison.h"
+
+#include <pybind11/stl.h>
+
+#include <optional>
+
+namespace cmfilter::python {
+
+namespace {
+
+py::dict summary_dict(const ErrorSummary& s)
+{
+    py::dict d;
+    d["count"] = s.count;
+    d["mean"] = s.mean;
+    d["p95"] = s.p95;
+    d["max"] = s.max;
+    return d;
+}
+
+FloatArray rgb_image(const py::object& value, const char* what)
+{
+    FloatArray a = py::cast<FloatArray>(value);
+    if (a.ndim() != 3 || a.shape(2) != 3) bad_argument(std::string(what) + " must have shape (H, W, 3)");
+    return a;
+}
+
+py::dict compare_arrays(const py::object& a_value, const py::object& b_value, int threads)
+{
+    FloatArray a = rgb_image(a_value, "a"), b = rgb_image(b_value, "b");
+    if (a.shape(0) != b.shape(0) || a.shape(1) != b.shape(1))
+        bad_argument("a is " + std::to_string(a.shape(1)) + " x " + std::to_string(a.shape(0)) + " but b is " +
+                     std::to_string(b.shape(1)) + " x " + std::to_string(b.shape(0)) +
+                     "; expected images of the same size");
+    for (const FloatArray* x : {&a, &b})
+        for (py::ssize_t i = 0; i < x->size(); ++i)
+            if (!std::isfinite(x->data()[i]))
+                bad_argument(std::string(x == &a ? "a" : "b") + " holds a non-finite value at flat index " +
+                             std::to_string(i) + " (expected finite scene-linear RGB)");
+    const int w = static_cast<int>(a.shape(1)), h = static_cast<int>(a.shape(0));
+    RgbDifference d;
+    ErrorSummary summary;
+    {
+        py::gil_scoped_release release;
+        d = measure_rgb_difference(a.data(), b.data(), w, h, threads);
+        summary = summarize_errors(d.de2000);
+    }
+    py::dict out;
+    out["width"] = w;
+    out["height"] = h;
+    out["rmse"] = d.rmse;
+    out["rmse_rgb"] = py::make_tuple(d.rmse_rgb[0], d.rmse_rgb[1], d.rmse_rgb[2]);
+    out["de2000"] = summary_dict(summary);
+    out["de2000_pixels"] = owning_array(std::move(d.de2000), {h, w});
+    return out;
+}
+
+py::dict compare_files(const std::string& a, const std::string& b, const std::string& colorspace_a,
+                       const std::string& colorspace_b, const std::optional<std::string>& heatmap, double heatmap_max,
+                       const std::string& ocio_config, int threads)
+{
+    ImageComparisonOptions options;
+    options.path_a = a;
+    options.path_b = b;
+    options.colorspace_a = colorspace_a;
+    options.colorspace_b = colorspace_b;
+    options.heatmap_path = heatmap.value_or("");
+    options.heatmap_max = heatmap_max;
+    options.threads = threads;
+    const ColorConfig config = load_config(ocio_config);
+    ImageComparison c = [&] {
+        py::gil_scoped_release release;
+        return unwrap(compare_images(options, config));
+    }();
+    py::dict out;
+    out["width"] = c.width;
+    out["height"] = c.height;
+    out["rmse"] = c.rmse;
+    out["rmse_rgb"] = py::make_tuple(c.rmse_rgb[0], c.rmse_rgb[1], c.rmse_rgb[2]);
+    out["de2000"] = summary_dict(c.de2000);
+    out["colorspace_a"] = c.a.colorspace;
+    out["colorspace_b"] = c.b.colorspace;
+    out["heatmap"] = c.heatmap_path;
+    return out;
+}
+
+}  // namespace
+
+void bind_ops(py::module_& m)
+{
+    m.def(
+        "apply",
+        [](const std::string& moments, const std::string& table, double lod, const std::string& method, int width,
+           int height, const std::string& colormap, const std::string& driver, const std::string& histograms,
+           const std::string& ocio_config, int threads) {
+        ApplyOptions options;
+        options.moments_path = moments;
+        options.table_path = table;
+        options.lod = lod;
+        options.method = unwrap(parse_filter_method(method));
+        options.width = width;
+        options.height = height;
+        options.map_path = colormap;
+        options.driver_path = driver;
+        options.histograms_path = histograms;
+        options.threads = threads;
+        const ColorConfig config = load_config(ocio_config);
+        FilteredImage image = [&] {
+            py::gil_scoped_release release;
+            return unwrap(apply_filter(options, config));
+        }();
+        warn_all(image.warnings);
+        return owning_array(std::move(image.rgb), {image.height, image.width, 3});
+        },
+        py::arg("moments"), py::arg("table"), py::kw_only(), py::arg("lod") = 0.0, py::arg("method") = "gaussian",
+        py::arg("width") = 0, py::arg("height") = 0, py::arg("colormap") = "", py::arg("driver") = "",
+        py::arg("histograms") = "", py::arg("ocio_config") = "", py::arg("threads") = 0,
+        "The filtered image of a moment pyramid's driver through a table's colour map at level of detail lod, by "
+        "naive, gaussian, exact or reference (as `cmfilter apply`): (H, W, 3) float32 scene-linear; warnings "
+        "(a clamped lod, lookups outside the table) as Python warnings.");
+
+    m.def(
+        "compare",
+        [](const py::object& a, const py::object& b, const std::string& colorspace_a, const std::string& colorspace_b,
+           const std::optional<std::string>& heatmap, double heatmap_max, const std::string& ocio_config, int threads) {
+        const bool a_path = py::isinstance<py::str>(a) || py::hasattr(a, "__fspath__");
+        const bool b_path = py::isinstance<py::str>(b) || py::hasattr(b, "__fspath__");
+        if (a_path != b_path) bad_argument("a and b must both be files or both be arrays");
+        if (a_path) {
+            auto path = [](const py::object& p) { return py::str(py::module_::import("os").attr("fspath")(p)); };
+            return compare_files(path(a), path(b), colorspace_a, colorspace_b, heatmap, heatmap_max, ocio_config,
+                                 threads);
+        }
+        if (heatmap) bad_argument("heatmap is written for files only (compare arrays' de2000_pixels instead)");
+        return compare_arrays(a, b, threads);
+        },
+        py::arg("a"), py::arg("b"), py::kw_only(), py::arg("colorspace_a") = "", py::arg("colorspace_b") = "",
+        py::arg("heatmap") = py::none(), py::arg("heatmap_max") = 10.0, py::arg("ocio_config") = "",
+        py::arg("threads") = 0,
+        "RMSE (scene-linear) and per-pixel CIEDE2000 of two images: two files (as `cmfilter compare`, colour "
+        "spaces decided alike) or two (H, W, 3) scene-linear arrays (then also de2000_pixels). A dict.");
+}
+
+}  // namespace cmfilter::python

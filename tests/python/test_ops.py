@@ -1,0 +1,88 @@
+# SPDX-License-Identifier: Apache-2.0
+# apply and compare against NumPy and scikit-image: the naive method as C0 of
+# NumPy's box mean of the driver, the gaussian one as the quadrature of
+# eq. 10 at NumPy's box mean and sigma, RMSE by NumPy, CIEDE2000 by
+# scikit-image.
+import numpy as np
+import pytest
+import skimage.color
+import tifffile
+
+import cmfilter
+from conftest import c0, linear_colormap, write_png8
+from test_tables import quadrature_T
+
+
+@pytest.fixture
+def baked(tmp_path, luts):
+    y, x = np.mgrid[0:16, 0:16]
+    f = write_png8(tmp_path / "driver.png", 0.5 + 0.35 * np.sin(x * 1.3) * np.cos(y * 0.9))
+    cmfilter.MomentPyramid.bake(str(tmp_path / "driver.png"), str(tmp_path / "moments.exr"))
+    table = cmfilter.ColorTable.bake(cmfilter.ColorMap.load(str(luts / "terrain.png")), values=256, sigmas=64)
+    table.write(str(tmp_path / "table.exr"))
+    return f, str(tmp_path / "moments.exr"), str(tmp_path / "table.exr")
+
+
+def test_apply_naive_and_gaussian_at_lod_2(baked, luts):
+    f, moments, table = baked
+    texels = linear_colormap(luts / "terrain.png")
+    blocks = lambda x: x.reshape(4, 4, 4, 4).mean(axis=(1, 3))
+    mean = blocks(f)
+    sigma = np.sqrt(np.maximum(blocks(f * f) - mean * mean, 0))
+    naive = cmfilter.apply(moments, table, lod=2, method="naive")
+    assert naive.shape == (4, 4, 3) and naive.dtype == np.float32
+    np.testing.assert_allclose(naive, c0(texels, 0, 1, mean), atol=5e-4)
+    gaussian = cmfilter.apply(moments, table, lod=2, method="gaussian")
+    expected = np.array([quadrature_T(texels, 0, 1, m, s) for m, s in zip(mean.ravel(), sigma.ravel())])
+    np.testing.assert_allclose(gaussian.reshape(-1, 3), expected, atol=4e-3)
+    # The reference: the box mean of C0(f) over the same 4 x 4 texels.
+    reference = cmfilter.apply(moments, table, lod=2, method="reference")
+    np.testing.assert_allclose(reference, c0(texels, 0, 1, f).reshape(4, 4, 4, 4, 3).mean(axis=(1, 3)), atol=5e-4)
+
+
+def test_apply_clamped_lod_warns(baked):
+    _, moments, table = baked
+    with pytest.warns(UserWarning, match="lod"):
+        cmfilter.apply(moments, table, lod=40, method="naive")
+
+
+def srgb_encode(linear):
+    linear = np.clip(linear, 0, 1)
+    return np.where(linear <= 0.0031308, 12.92 * linear, 1.055 * linear ** (1 / 2.4) - 0.055)
+
+
+def test_compare_arrays_against_numpy_and_skimage():
+    rng = np.random.default_rng(9)
+    a = rng.uniform(0, 1, (6, 7, 3)).astype(np.float32)
+    b = np.clip(a + rng.normal(0, 0.05, a.shape), 0, 1.2).astype(np.float32)
+    result = cmfilter.compare(a, b)
+    d = a.astype(np.float64) - b
+    assert result["rmse"] == pytest.approx(np.sqrt(np.mean(d * d)), rel=1e-9)
+    np.testing.assert_allclose(result["rmse_rgb"], np.sqrt(np.mean(d * d, axis=(0, 1))), rtol=1e-9)
+    # scikit-image decodes sRGB itself; its D65 white differs from RGB (1, 1, 1)'s XYZ in the 4th digit.
+    de = skimage.color.deltaE_ciede2000(skimage.color.rgb2lab(srgb_encode(a)), skimage.color.rgb2lab(srgb_encode(b)))
+    np.testing.assert_allclose(result["de2000_pixels"], de, rtol=0.01, atol=0.01)
+    assert result["de2000"]["mean"] == pytest.approx(de.mean(), rel=0.01)
+    assert result["de2000"]["max"] == pytest.approx(de.max(), rel=0.01)
+
+
+def test_compare_files_matches_arrays(tmp_path):
+    rng = np.random.default_rng(10)
+    a = rng.uniform(0, 1, (5, 8, 3)).astype(np.float32)
+    b = rng.uniform(0, 1, (5, 8, 3)).astype(np.float32)
+    tifffile.imwrite(tmp_path / "a.tif", a, photometric="rgb")
+    tifffile.imwrite(tmp_path / "b.tif", b, photometric="rgb")
+    result = cmfilter.compare(str(tmp_path / "a.tif"), tmp_path / "b.tif")
+    d = a.astype(np.float64) - b
+    assert result["rmse"] == pytest.approx(np.sqrt(np.mean(d * d)), rel=1e-9)
+    assert (result["width"], result["height"]) == (8, 5)
+
+
+def test_compare_errors(tmp_path):
+    with pytest.raises(cmfilter.Error, match="same size"):
+        cmfilter.compare(np.zeros((2, 3, 3)), np.zeros((3, 2, 3)))
+    with pytest.raises(cmfilter.Error, match="absent.exr") as e:
+        cmfilter.compare(str(tmp_path / "absent.exr"), str(tmp_path / "absent.exr"))
+    assert e.value.kind == "io"
+    with pytest.raises(cmfilter.Error, match="non-finite"):
+        cmfilter.compare(np.full((1, 1, 3), np.nan), np.zeros((1, 1, 3)))

@@ -1,0 +1,46 @@
+# SPDX-License-Identifier: Apache-2.0
+# render to an array against the cmfilter command's own render of the same
+# scene, its EXR read by OpenImageIO's oiiotool (converted to a float TIFF)
+# and tifffile, never by the module.
+import shutil
+
+import numpy as np
+import pytest
+import tifffile
+
+import cmfilter
+from conftest import run
+
+
+@pytest.mark.parametrize("method", ["naive", "gaussian"])
+def test_render_equals_the_command(cli, source_dir, tmp_path, method):
+    oiiotool = shutil.which("oiiotool")
+    if not oiiotool:
+        pytest.skip("oiiotool is not installed")
+    scene = source_dir / "tests/cli/scenes/good.json"
+    exr, tif = tmp_path / "render.exr", tmp_path / "render.tif"
+    run(cli, "render", scene, "--method", method, "--size", "16x9", "-o", exr, "--quiet")
+    run(oiiotool, exr, "-d", "float", "--compression", "none", "-o", tif)
+    expected = tifffile.imread(tif)
+    image = cmfilter.render(str(scene), method=method, size=(16, 9))
+    assert image.shape == (9, 16, 3) and image.dtype == np.float32
+    np.testing.assert_array_equal(image, expected[..., :3])
+
+
+def test_render_aovs_and_region(source_dir):
+    scene = str(source_dir / "tests/cli/scenes/good.json")
+    whole = cmfilter.render(scene, method="naive", size=(16, 9), aovs=True)
+    assert set(whole) >= {"rgb", "hit", "distance", "mean", "sigma", "lod"}
+    assert whole["sigma"].shape == (9, 16)
+    part = cmfilter.render(scene, method="naive", size=(16, 9), region=(4, 2, 12, 7))
+    np.testing.assert_array_equal(part, whole["rgb"][2:7, 4:12])
+
+
+def test_render_errors(source_dir, tmp_path):
+    with pytest.raises(cmfilter.Error, match="missing.json"):
+        cmfilter.render(str(tmp_path / "missing.json"))
+    with pytest.raises(cmfilter.Error, match="unknown-key.json") as e:
+        cmfilter.render(str(source_dir / "tests/cli/scenes/unknown-key.json"))
+    assert e.value.kind == "bad_input"
+    with pytest.raises(cmfilter.Error, match="method"):
+        cmfilter.render(str(source_dir / "tests/cli/scenes/good.json"), method="magic")
