@@ -73,11 +73,28 @@ std::string text_attribute(const OIIO::ImageSpec& spec, const char* name)
     return p->type() == OIIO::TypeDesc::STRING ? std::string(p->get_ustring().string()) : std::string(p->get_string());
 }
 
+// What read_coordinate_map_exr requires of a map's record, checked before
+// writing so that every file written reads back.
+Status check_info(const std::string& path, const CoordinateMapInfo& info)
+{
+    const auto bad = [&](const std::string& what) {
+        return bad_input("the coordinate map for '" + path + "' has " + what);
+    };
+    if (info.sample_kind != "image" && info.sample_kind != "stack" && info.sample_kind != "btf")
+        return bad("CoordinateMapInfo::sample_kind '" + info.sample_kind + "' (expected image, stack or btf)");
+    if (info.k < 1 || info.neighbourhood < 1 || info.levels < 1)
+        return bad("CoordinateMapInfo::k " + std::to_string(info.k) + ", CoordinateMapInfo::neighbourhood " +
+                   std::to_string(info.neighbourhood) + " and CoordinateMapInfo::levels " +
+                   std::to_string(info.levels) + " (expected each >= 1)");
+    return ok();
+}
+
 }  // namespace
 
 Status write_coordinate_map_exr(const std::string& path, const CoordinateMap& map)
 {
     if (map.levels.empty()) return bad_input("the coordinate map for '" + path + "' has no levels");
+    if (auto st = check_info(path, map.info); !st) return st;
     for (std::size_t l = 0; l < map.levels.size(); ++l)
         if (auto st = check_level(path, l, map.levels[l]); !st) return st;
     if (!std::isfinite(map.info.seconds) || map.info.seconds < 0)

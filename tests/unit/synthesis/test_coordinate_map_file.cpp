@@ -231,3 +231,36 @@ TEST_CASE("coordinate map file: a coordinate outside the sample is not written, 
     REQUIRE_FALSE(missing);
     CHECK(missing.error().kind == ErrorKind::Io);
 }
+
+TEST_CASE("coordinate map file: a record the reader would refuse is not written (a sample kind, k, neighbourhood)")
+{
+    std::mt19937_64 rng(10);
+    CoordinateMap map;
+    map.info.sample_kind = "image";
+    map.info.k = map.info.neighbourhood = map.info.levels = 1;
+    map.levels.push_back(random_level(rng, 4, 4, 6, 6));
+    const std::string path = kDir + "/bad-record.exr";
+    const auto refused = [&](const CoordinateMap& m, const std::string& text) {
+        std::filesystem::remove(path);
+        const Status written = write_coordinate_map_exr(path, m);
+        REQUIRE_FALSE(written);
+        CHECK(written.error().kind == ErrorKind::BadInput);
+        CHECK_MESSAGE(written.error().message.find(text) != std::string::npos, written.error().message);
+        CHECK_FALSE(std::filesystem::exists(path));
+    };
+    CoordinateMap no_kind = map;
+    no_kind.info.sample_kind.clear();
+    refused(no_kind, "CoordinateMapInfo::sample_kind ''");
+    CoordinateMap no_k = map;
+    no_k.info.k = 0;
+    refused(no_k, "CoordinateMapInfo::k 0");
+    CoordinateMap no_neighbourhood = map;
+    no_neighbourhood.info.neighbourhood = 0;
+    refused(no_neighbourhood, "CoordinateMapInfo::neighbourhood 0");
+    // The same map with a valid record is written and read back by the reader.
+    REQUIRE(write_coordinate_map_exr(path, map));
+    auto back = read_coordinate_map_exr(path);
+    REQUIRE_MESSAGE(back.has_value(), (back ? std::string() : back.error().message));
+    CHECK(back->info.k == 1);
+    CHECK(back->info.sample_kind == "image");
+}
