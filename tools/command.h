@@ -166,9 +166,6 @@ std::string color_config_for_record(const std::string& ocio_config_option);
 constexpr int kJsonSchemaVersion = 1;
 void print_json(const std::string& command, nlohmann::json summary);
 
-// --probes (render, bench): BadInput unless 1 <= probes <= 64.
-Status check_probes(int probes);
-
 // A progress callback printing "\r<command>: N%" on stderr when the percent
 // changes (a newline at 100%); callers use it only when stderr is a terminal.
 std::function<void(double)> terminal_progress(const std::string& command);

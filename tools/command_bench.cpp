@@ -117,7 +117,7 @@ Status run(const BenchArgs& args)
 
     options.repeats = args.repeats;
     options.max_probes = args.probes;
-    if (auto st = check_probes(args.probes); !st) return st;
+    if (auto st = check_render_probes(args.probes); !st) return st;
     if (!args.only.empty()) {
         auto chosen = select_bench_configurations(options.configurations, args.only);
         if (!chosen) return chosen.error();
@@ -213,7 +213,8 @@ Command setup_bench(CLI::App& parent)
     flags.insert(flags.end(), {{"BenchOptions::reference_samples", "--reference-spp"},
                                {"BenchOptions::reference_repeat", "--reference-repeat"},
                                {"BenchOptions::max_reference_samples", "--max-reference-spp"},
-                               {"BenchOptions::region", "--region"}});
+                               {"BenchOptions::region", "--region"},
+                               {"RenderOptions::max_probes", "--probes"}});
     return {app, [args] { return run(*args); }, flags};
 }
 

@@ -181,7 +181,7 @@ Status run(const RenderArgs& args)
     options.seed = args.seed;
     options.threads = args.threads;
     options.footprint = *footprint;
-    if (auto st = check_probes(args.probes); !st) return st;
+    if (auto st = check_render_probes(args.probes); !st) return st;
     options.max_probes = args.probes;
     options.edge_coverage = !args.no_edge_coverage;
     options.masking = args.masking == "correlated" ? MaskingShadowing::DirectionCorrelated
@@ -321,6 +321,7 @@ Command setup_render(CLI::App& parent)
     FieldFlags flags = color_map_flags();
     flags.insert(flags.end(), {{"RenderOptions::region", "--region"},
                                {"RenderOptions::samples", "--spp"},
+                               {"RenderOptions::max_probes", "--probes"},
                                {"TableChoiceOptions::tolerance", "--tolerance"},
                                {"TableChoiceOptions::plain_bound", "--shortcut"}});
     return {app, [args] { return run(*args); }, flags};

@@ -21,6 +21,8 @@ set_tests_properties(cli.render.size PROPERTIES FIXTURES_SETUP render_size)
 add_test(NAME cli.render.size-info COMMAND ${OIIOTOOL} --info ${OUT}/render-size.exr)
 set_tests_properties(cli.render.size-info PROPERTIES FIXTURES_REQUIRED render_size LABELS cli
     PASS_REGULAR_EXPRESSION "40 x +10, 3 channel, float openexr")
+cmfilter_cli_case(NAME render.bad.probes EXIT 3 STDERR "error: --probes 0 is out of range \\(expected 1 to 64\\)"
+                  ABSENT ${RO} COMMAND ${CMF} render ${SC}/good.json --probes 0 -o ${RO})
 cmfilter_cli_case(NAME render.bad.size-side EXIT 3 STDERR "--size '20000x10' has a side above 16384"
                   ABSENT ${RO} COMMAND ${CMF} render ${SC}/good.json --size 20000x10 -o ${RO})
 cmfilter_cli_case(NAME render.bad.size-pixels EXIT 3 STDERR "--size '16384x16384' is 268435456 pixels, above"

@@ -34,4 +34,13 @@ Status check_render_samples(int samples)
     return ok();
 }
 
+Status check_render_probes(int probes)
+{
+    if (probes < 1 || probes > kMaxProbes)
+        return bad_input("RenderOptions::max_probes " + std::to_string(probes) + " is out of range (expected 1 to " +
+                             std::to_string(kMaxProbes) + ")",
+                         "RenderOptions::max_probes");
+    return ok();
+}
+
 }  // namespace cmfilter

@@ -21,6 +21,8 @@ Expected<RenderMethod> parse_render_method(const std::string& text);
 
 inline constexpr int kReferenceSamples = 1024;
 inline constexpr int kMaxSamples = 1 << 16;
+// The most probes an anisotropic footprint is cut into (RenderOptions::max_probes).
+inline constexpr int kMaxProbes = 64;
 
 struct RenderOptions {
     RenderMethod method = RenderMethod::Gaussian;
@@ -62,5 +64,9 @@ struct RenderOptions {
 // BadInput (field RenderOptions::samples) for a sample count outside
 // 1 .. kMaxSamples: the one check of a count of rays per pixel.
 Status check_render_samples(int samples);
+
+// BadInput (field RenderOptions::max_probes) for a probe count outside
+// 1 .. kMaxProbes.
+Status check_render_probes(int probes);
 
 }  // namespace cmfilter

@@ -196,6 +196,16 @@ TEST_CASE("render rejects sample counts out of range and mismatched materials")
     REQUIRE_FALSE(zero);
     CHECK(zero.error().message.find("RenderOptions::samples 0 is out of range") != std::string::npos);
     options.samples = 4;
+    for (int probes : {0, 65}) {
+        options.max_probes = probes;
+        auto bad = render(s.scene, s.materials, options);
+        REQUIRE_FALSE(bad);
+        CHECK(bad.error().field == "RenderOptions::max_probes");
+        CHECK_MESSAGE(bad.error().message.find("RenderOptions::max_probes " + std::to_string(probes) +
+                                               " is out of range (expected 1 to 64)") != std::string::npos,
+                      bad.error().message);
+    }
+    options.max_probes = 16;
     auto none = render(s.scene, {}, options);
     REQUIRE_FALSE(none);
     CHECK(none.error().message.find("0 materials for 1 surfaces") != std::string::npos);
