@@ -120,5 +120,6 @@ void bind_fits(py::module_& m);
 void bind_coordinate_maps(py::module_& m);
 void bind_ops(py::module_& m);
 void bind_render(py::module_& m);
+void bind_synthesis(py::module_& m);
 
 }  // namespace cmfilter::python
