@@ -37,8 +37,7 @@ void bind_render(py::module_& m)
             options.method = unwrap(parse_render_method(method));
             options.footprint = unwrap(parse_footprint_width(footprint));
             check(check_render_samples(samples));
-            if (probes < 1 || probes > 64)
-                bad_argument("probes " + std::to_string(probes) + " is out of range (expected 1 to 64)");
+            check(check_render_probes(probes));
             if (masking != "uncorrelated" && masking != "correlated")
                 bad_argument("masking '" + masking + "' is unknown (expected uncorrelated or correlated)");
             if (slope_shading != "uncorrelated" && slope_shading != "correlated")

@@ -44,3 +44,6 @@ def test_render_errors(source_dir, tmp_path):
     assert e.value.kind == "bad_input"
     with pytest.raises(cmfilter.Error, match="method"):
         cmfilter.render(str(source_dir / "tests/cli/scenes/good.json"), method="magic")
+    with pytest.raises(cmfilter.Error, match=r"RenderOptions::max_probes 65 is out of range") as e:
+        cmfilter.render(str(source_dir / "tests/cli/scenes/good.json"), probes=65)
+    assert e.value.field == "RenderOptions::max_probes"
