@@ -23,7 +23,7 @@ packages=(g++ make cmake pkg-config
 # The tests: python3-jsonschema validates every command's --json against docs/cmfilter.schema.json;
 # the Python module (pybind11) and its tests against NumPy, SciPy and matplotlib (docs/python.md).
 [ "$mode" = example ] || packages+=(python3-jsonschema pybind11-dev python3-dev python3-numpy python3-scipy
-                                   python3-matplotlib python3-pytest)
+                                   python3-matplotlib python3-pytest python3-tifffile)
 # The checked builds: clang with its sanitizer and libFuzzer runtimes, and
 # llvm-symbolizer for their reports; munge and Slurm for the farm example's
 # test, which stands up a single-node cluster of its own (docs/farm.md).
