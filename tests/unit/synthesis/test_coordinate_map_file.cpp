@@ -94,6 +94,18 @@ void check_refused(const std::string& path, const std::vector<std::string>& text
         CHECK_MESSAGE(r.error().message.find(text) != std::string::npos, r.error().message);
 }
 
+// A one-level 4 x 4 map into a 6 x 6 image sample with the smallest valid
+// record (k, neighbourhood and levels 1).
+CoordinateMap one_level_map(std::uint64_t seed)
+{
+    std::mt19937_64 rng(seed);
+    CoordinateMap map;
+    map.info.sample_kind = "image";
+    map.info.k = map.info.neighbourhood = map.info.levels = 1;
+    map.levels.push_back(random_level(rng, 4, 4, 6, 6));
+    return map;
+}
+
 }  // namespace
 
 TEST_CASE("coordinate map file: every level and field reads back exactly")
@@ -213,11 +225,7 @@ TEST_CASE("coordinate map file: NaN, a missing channel, a wrong kind or version,
 
 TEST_CASE("coordinate map file: a coordinate outside the sample is not written, and nothing is left behind")
 {
-    std::mt19937_64 rng(9);
-    CoordinateMap map;
-    map.info.sample_kind = "image";
-    map.info.k = map.info.neighbourhood = map.info.levels = 1;
-    map.levels.push_back(random_level(rng, 4, 4, 6, 6));
+    CoordinateMap map = one_level_map(9);
     map.levels[0].coords[2 * 5] = 6;
     const std::string path = kDir + "/outside.exr";
     std::filesystem::remove(path);
@@ -234,11 +242,7 @@ TEST_CASE("coordinate map file: a coordinate outside the sample is not written, 
 
 TEST_CASE("coordinate map file: a record the reader would refuse is not written (a sample kind, k, neighbourhood)")
 {
-    std::mt19937_64 rng(10);
-    CoordinateMap map;
-    map.info.sample_kind = "image";
-    map.info.k = map.info.neighbourhood = map.info.levels = 1;
-    map.levels.push_back(random_level(rng, 4, 4, 6, 6));
+    const CoordinateMap map = one_level_map(10);
     const std::string path = kDir + "/bad-record.exr";
     const auto refused = [&](const CoordinateMap& m, const std::string& text) {
         std::filesystem::remove(path);
