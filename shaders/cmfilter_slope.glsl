@@ -5,17 +5,28 @@
 //     D_s(s) = max(0, cos t - sin t <s, d>) p(s) / Z,   s ~ N(m, Sigma),
 // (the slopes a viewer at omega_o = (sin t cos p, sin t sin p, cos t) sees,
 // weighted by their foreshortened area; d = (cos p, sin p)), and the
-// slope colour <C_s, D_s> with D_s replaced by the Gaussian of those moments
-// (the paper's single Gaussian, fig. 9), integrated by a tensor Gauss-Hermite
-// rule along the covariance's principal axes, for a steepness colour map
-// (C_s by the slope angle atan |s| in degrees). A function library: no
-// #version, no main. Needs cmfilter_color_table.glsl (the colour map C0) and
-// cmfilter_height.glsl (erfc, erfcx) before it.
+// slope colour <C_s, D_s> of eq. 20 with D_s replaced by the Gaussian of
+// those moments (the paper's single Gaussian, fig. 9), integrated by a
+// tensor Gauss-Hermite rule along the covariance's principal axes, for
+// either kind of slope colour map C_s (slope_color_map.h): a steepness map
+// (C_s by the slope angle atan |s| in degrees) or a slope-vector map (C_s
+// by the 2-D slope). A function library: no #version, no main. Needs
+// cmfilter_color_table.glsl (the colour map C0), cmfilter_height.glsl
+// (erfc, erfcx) and cmfilter_bilinear.glsl before it.
 //
 // The Gauss-Hermite rule: the library's gauss_hermite_rule(n) (nodes z_i
 // and weights w_i, summing to 1, for the standard normal; `render` uses
-// n = 12), passed in as uniforms. The steepness map: a ColorMap over
-// [domain_min, domain_max] degrees, uploaded as for cmf_color_map.
+// n = 12), passed in as uniforms.
+//
+// Uploading. A steepness map: a ColorMap over [domain_min, domain_max]
+// degrees, an n x 1 texture as for cmf_color_map. A slope-vector map: the
+// image (`slope_map` of a scene's material, its `max_slope` s_max) as a
+// GL_RGB32F texture of its width x height, rows in file order (row 0, the
+// top, is s_y = +s_max; column 0 is s_x = -s_max), GL_LINEAR,
+// GL_CLAMP_TO_EDGE on both axes, no mipmaps. Its texel (i, j) has its centre
+// at s_x = -s_max + (i + 0.5) 2 s_max / width,
+// s_y = s_max - (j + 0.5) 2 s_max / height; slopes steeper than the outer
+// centres along an axis take the edge texels.
 
 #ifndef CMFILTER_SLOPE_GLSL
 #define CMFILTER_SLOPE_GLSL
@@ -141,12 +152,55 @@ vec3 cmf_steepness_color(sampler2D map, float domain_min, float domain_max, int 
     return cmf_color_map_exact(map, domain_min, domain_max, wrap, degrees(atan(length(s))));
 }
 
+// The texture coordinates of slope s in a slope-vector map over
+// [-s_max, s_max]^2 (texel centres already at (i + 0.5) / width); a
+// coordinate that is not finite reads as 0, as the library reads it (an
+// infinite or NaN slope gives the left or top edge).
+vec2 cmf_slope_vector_uv(float s_max, vec2 s)
+{
+    vec2 uv = vec2(s.x + s_max, s_max - s.y) / (2.0 * s_max);
+    return vec2(isnan(uv.x) || isinf(uv.x) ? 0.0 : uv.x, isnan(uv.y) || isinf(uv.y) ? 0.0 : uv.y);
+}
+
+// C_s of a slope-vector map through the sampler's bilinear filter (one fetch;
+// GL_CLAMP_TO_EDGE continues the edge texels as the library does).
+vec3 cmf_slope_vector_color(sampler2D map, float s_max, vec2 s)
+{
+    return textureLod(map, cmf_slope_vector_uv(s_max, s), 0.0).rgb;
+}
+
+// The same interpolated in the shader from texelFetch: the library's
+// SlopeVectorColorMap::evaluate to float rounding, whatever the sampler.
+vec3 cmf_slope_vector_color_exact(sampler2D map, float s_max, vec2 s)
+{
+    return cmf_bilinear_texels(map, ivec2(0), textureSize(map, 0), cmf_slope_vector_uv(s_max, s), false).rgb;
+}
+
+// A slope colour map C_s of either kind (the library's SlopeMap), as its
+// texture's parameters.
+const int CMF_SLOPE_MAP_STEEPNESS = 0;
+const int CMF_SLOPE_MAP_VECTOR = 1;
+struct CmfSlopeMap {
+    int kind;                     // CMF_SLOPE_MAP_*
+    float domain_min, domain_max;  // steepness: the map's domain, degrees
+    int wrap;                     // steepness: CMF_WRAP_*
+    float s_max;                  // vector: the largest slope along each axis, > 0
+};
+
+// C_s(s) by the texelFetch forms.
+vec3 cmf_slope_map_color(sampler2D map, CmfSlopeMap m, vec2 s)
+{
+    if (m.kind == CMF_SLOPE_MAP_VECTOR) return cmf_slope_vector_color_exact(map, m.s_max, s);
+    return cmf_steepness_color(map, m.domain_min, m.domain_max, m.wrap, s);
+}
+
 // <C_s, D_s> of eq. 20 with D_s replaced by the Gaussian of its exact
-// moments (`render --method gaussian` for slope layers): a points x points
-// Gauss-Hermite rule along the principal axes of the covariance.
-vec3 cmf_gaussian_slope_color(sampler2D map, float domain_min, float domain_max, int wrap, CmfSlopeGaussian slopes,
-                              float theta, float phi, int points, float nodes[CMF_MAX_HERMITE_POINTS],
-                              float weights[CMF_MAX_HERMITE_POINTS])
+// moments (`render --method gaussian` for slope layers, the library's
+// gaussian_slope_color): a points x points Gauss-Hermite rule along the
+// principal axes of the covariance, C_s read at each node by
+// cmf_slope_map_color.
+vec3 cmf_gaussian_slope_color(sampler2D map, CmfSlopeMap slope_map, CmfSlopeGaussian slopes, float theta, float phi,
+                              int points, float nodes[CMF_MAX_HERMITE_POINTS], float weights[CMF_MAX_HERMITE_POINTS])
 {
     CmfSlopeGaussian m = cmf_slope_filtering_moments(slopes, theta, phi);
     float angle = 0.5 * atan(2.0 * m.xy, m.xx - m.yy);
@@ -160,8 +214,7 @@ vec3 cmf_gaussian_slope_color(sampler2D map, float domain_min, float domain_max,
         vec3 row = vec3(0.0);
         for (int j = 0; j < points; ++j) {
             float q = minor * nodes[j];
-            row += weights[j] *
-                   cmf_steepness_color(map, domain_min, domain_max, wrap, m.mean + vec2(p * c - q * s, p * s + q * c));
+            row += weights[j] * cmf_slope_map_color(map, slope_map, m.mean + vec2(p * c - q * s, p * s + q * c));
         }
         sum += weights[i] * row;
     }

@@ -19,6 +19,15 @@ struct CmfSlopeViewFrame
     float residual_variance;
 };
 
+struct CmfSlopeMap
+{
+    int kind;
+    float domain_min;
+    float domain_max;
+    int wrap;
+    float s_max;
+};
+
 static const uint3 gl_WorkGroupSize = uint3(64u, 1u, 1u);
 
 RWByteAddressBuffer parameters : register(u2);
@@ -26,6 +35,8 @@ RWByteAddressBuffer points_in : register(u0);
 RWByteAddressBuffer results_out : register(u1);
 Texture2D<float4> steepness_map : register(t0);
 SamplerState _steepness_map_sampler : register(s0);
+Texture2D<float4> slope_vector_map : register(t1);
+SamplerState _slope_vector_map_sampler : register(s1);
 
 static uint3 gl_GlobalInvocationID;
 struct SPIRV_Cross_Input
@@ -59,17 +70,17 @@ CmfSlopeViewFrame cmf_slope_view_frame(CmfSlopeGaussian s, float theta, float ph
             f.sin_theta = sin(t);
         }
     }
-    bool _378 = isnan(phi);
-    bool _384;
-    if (!_378)
+    bool _655 = isnan(phi);
+    bool _661;
+    if (!_655)
     {
-        _384 = isinf(phi);
+        _661 = isinf(phi);
     }
     else
     {
-        _384 = _378;
+        _661 = _655;
     }
-    float p = _384 ? 0.0f : phi;
+    float p = _661 ? 0.0f : phi;
     float c = cos(p);
     float sn = sin(p);
     f.d = float2(c, sn);
@@ -89,16 +100,16 @@ CmfSlopeViewFrame cmf_slope_view_frame(CmfSlopeGaussian s, float theta, float ph
     {
         f.regression = uv / uu;
         float residual = ((xx * yy) - (xy * xy)) / uu;
-        float _528;
+        float _804;
         if (residual >= 0.0f)
         {
-            _528 = min(residual, vv);
+            _804 = min(residual, vv);
         }
         else
         {
-            _528 = 0.0f;
+            _804 = 0.0f;
         }
-        f.residual_variance = _528;
+        f.residual_variance = _804;
     }
     return f;
 }
@@ -114,16 +125,16 @@ float cmf_erfc(float z)
 {
     float param = abs(z);
     float e = exp((-z) * z) * cmf_erfcx(param);
-    float _339;
+    float _387;
     if (z >= 0.0f)
     {
-        _339 = e;
+        _387 = e;
     }
     else
     {
-        _339 = 2.0f - e;
+        _387 = 2.0f - e;
     }
-    return _339;
+    return _387;
 }
 
 float2 cmf_clamped_linear_normal(float k)
@@ -202,16 +213,16 @@ CmfSlopeGaussian cmf_slope_filtering_moments(CmfSlopeGaussian slopes, float thet
         float param_3 = k;
         float2 z = cmf_clamped_linear_normal(param_3);
         var_u = (f.sigma_u * f.sigma_u) * z.y;
-        float _748;
+        float _1023;
         if (k >= 0.0f)
         {
-            _748 = f.mean_u + (f.sigma_u * z.x);
+            _1023 = f.mean_u + (f.sigma_u * z.x);
         }
         else
         {
-            _748 = (a / b) + (f.sigma_u * z.x);
+            _1023 = (a / b) + (f.sigma_u * z.x);
         }
-        mean_u = _748;
+        mean_u = _1023;
     }
     float mean_v = f.mean_v + (f.regression * (mean_u - f.mean_u));
     float uv = f.regression * var_u;
@@ -226,6 +237,170 @@ CmfSlopeGaussian cmf_slope_filtering_moments(CmfSlopeGaussian slopes, float thet
     return m;
 }
 
+float2 cmf_slope_vector_uv(float s_max, float2 s)
+{
+    float2 uv = float2(s.x + s_max, s_max - s.y) / (2.0f * s_max).xx;
+    bool _1183 = isnan(uv.x);
+    bool _1190;
+    if (!_1183)
+    {
+        _1190 = isinf(uv.x);
+    }
+    else
+    {
+        _1190 = _1183;
+    }
+    float _1191;
+    if (_1190)
+    {
+        _1191 = 0.0f;
+    }
+    else
+    {
+        _1191 = uv.x;
+    }
+    bool _1200 = isnan(uv.y);
+    bool _1207;
+    if (!_1200)
+    {
+        _1207 = isinf(uv.y);
+    }
+    else
+    {
+        _1207 = _1200;
+    }
+    float _1208;
+    if (_1207)
+    {
+        _1208 = 0.0f;
+    }
+    else
+    {
+        _1208 = uv.y;
+    }
+    return float2(_1191, _1208);
+}
+
+float cmf_near_block(float s, bool periodic)
+{
+    bool _451 = isnan(s);
+    bool _457;
+    if (!_451)
+    {
+        _457 = isinf(s);
+    }
+    else
+    {
+        _457 = _451;
+    }
+    if (_457)
+    {
+        return 0.0f;
+    }
+    float _462;
+    if (periodic)
+    {
+        _462 = s - floor(s);
+    }
+    else
+    {
+        _462 = clamp(s, -1.0f, 2.0f);
+    }
+    return _462;
+}
+
+int cmf_floor_divide(int a, int n)
+{
+    int _399;
+    if (a >= 0)
+    {
+        _399 = a / n;
+    }
+    else
+    {
+        _399 = -(((n - 1) - a) / n);
+    }
+    return _399;
+}
+
+int cmf_wrap_texel(int i, int n, bool periodic)
+{
+    if ((i >= 0) && (i < n))
+    {
+        return i;
+    }
+    if (periodic)
+    {
+        int param = i;
+        int param_1 = n;
+        return i - (n * cmf_floor_divide(param, param_1));
+    }
+    int _441;
+    if (i < 0)
+    {
+        _441 = 0;
+    }
+    else
+    {
+        _441 = n - 1;
+    }
+    return _441;
+}
+
+float4 cmf_bilinear_texels(Texture2D<float4> image, SamplerState _image_sampler, int2 origin, int2 size, float2 st, bool periodic)
+{
+    float param = st.x;
+    bool param_1 = periodic;
+    float param_2 = st.y;
+    bool param_3 = periodic;
+    float2 p = (float2(cmf_near_block(param, param_1), cmf_near_block(param_2, param_3)) * float2(size)) - 0.5f.xx;
+    float2 f = floor(p);
+    float2 a = p - f;
+    int param_4 = int(f.x);
+    int param_5 = size.x;
+    bool param_6 = periodic;
+    int x0 = cmf_wrap_texel(param_4, param_5, param_6);
+    int param_7 = int(f.x) + 1;
+    int param_8 = size.x;
+    bool param_9 = periodic;
+    int x1 = cmf_wrap_texel(param_7, param_8, param_9);
+    int param_10 = int(f.y);
+    int param_11 = size.y;
+    bool param_12 = periodic;
+    int y0 = cmf_wrap_texel(param_10, param_11, param_12);
+    int param_13 = int(f.y) + 1;
+    int param_14 = size.y;
+    bool param_15 = periodic;
+    int y1 = cmf_wrap_texel(param_13, param_14, param_15);
+    float4 top = image.Load(int3(origin + int2(x0, y0), 0));
+    if (a.x > 0.0f)
+    {
+        top += ((image.Load(int3(origin + int2(x1, y0), 0)) - top) * a.x);
+    }
+    if (!(a.y > 0.0f))
+    {
+        return top;
+    }
+    float4 bottom = image.Load(int3(origin + int2(x0, y1), 0));
+    if (a.x > 0.0f)
+    {
+        bottom += ((image.Load(int3(origin + int2(x1, y1), 0)) - bottom) * a.x);
+    }
+    return top + ((bottom - top) * a.y);
+}
+
+float3 cmf_slope_vector_color_exact(Texture2D<float4> map, SamplerState _map_sampler, float s_max, float2 s)
+{
+    uint _1230_dummy_parameter;
+    float param = s_max;
+    float2 param_1 = s;
+    int2 param_2 = int2(0, 0);
+    int2 param_3 = int2(spvTextureSize(map, uint(0), _1230_dummy_parameter));
+    float2 param_4 = cmf_slope_vector_uv(param, param_1);
+    bool param_5 = false;
+    return cmf_bilinear_texels(map, _map_sampler, param_2, param_3, param_4, param_5).xyz;
+}
+
 float cmf_color_map_coordinate(float v, float domain_min, float domain_max)
 {
     return (v - domain_min) / (domain_max - domain_min);
@@ -233,8 +408,8 @@ float cmf_color_map_coordinate(float v, float domain_min, float domain_max)
 
 float3 cmf_color_map_exact(Texture2D<float4> map, SamplerState _map_sampler, float domain_min, float domain_max, int wrap, float v)
 {
-    uint _95_dummy_parameter;
-    int n = int2(spvTextureSize(map, uint(0), _95_dummy_parameter)).x;
+    uint _145_dummy_parameter;
+    int n = int2(spvTextureSize(map, uint(0), _145_dummy_parameter)).x;
     float param = v;
     float param_1 = domain_min;
     float param_2 = domain_max;
@@ -260,16 +435,16 @@ float3 cmf_color_map_exact(Texture2D<float4> map, SamplerState _map_sampler, flo
         {
             return map.Load(int3(int2(0, 0), 0)).xyz;
         }
-        float _168;
+        float _216;
         if (wrap == 2)
         {
-            _168 = float(n);
+            _216 = float(n);
         }
         else
         {
-            _168 = 2.0f * float(n);
+            _216 = 2.0f * float(n);
         }
-        float period = _168;
+        float period = _216;
         x -= (period * floor(x / period));
     }
     float k = floor(x);
@@ -287,26 +462,26 @@ float3 cmf_color_map_exact(Texture2D<float4> map, SamplerState _map_sampler, flo
         {
             k0 %= (2 * n);
             k1 %= (2 * n);
-            int _226;
+            int _274;
             if (k0 < n)
             {
-                _226 = k0;
+                _274 = k0;
             }
             else
             {
-                _226 = ((2 * n) - 1) - k0;
+                _274 = ((2 * n) - 1) - k0;
             }
-            k0 = _226;
-            int _240;
+            k0 = _274;
+            int _288;
             if (k1 < n)
             {
-                _240 = k1;
+                _288 = k1;
             }
             else
             {
-                _240 = ((2 * n) - 1) - k1;
+                _288 = ((2 * n) - 1) - k1;
             }
-            k1 = _240;
+            k1 = _288;
         }
     }
     float3 a = map.Load(int3(int2(k0, 0), 0)).xyz;
@@ -323,24 +498,39 @@ float3 cmf_steepness_color(Texture2D<float4> map, SamplerState _map_sampler, flo
     return cmf_color_map_exact(map, _map_sampler, param, param_1, param_2, param_3);
 }
 
-float3 cmf_gaussian_slope_color(Texture2D<float4> map, SamplerState _map_sampler, float domain_min, float domain_max, int wrap, CmfSlopeGaussian slopes, float theta, float phi, int points, float nodes[16], float weights[16])
+float3 cmf_slope_map_color(Texture2D<float4> map, SamplerState _map_sampler, CmfSlopeMap m, float2 s)
+{
+    if (m.kind == 1)
+    {
+        float param = m.s_max;
+        float2 param_1 = s;
+        return cmf_slope_vector_color_exact(map, _map_sampler, param, param_1);
+    }
+    float param_2 = m.domain_min;
+    float param_3 = m.domain_max;
+    int param_4 = m.wrap;
+    float2 param_5 = s;
+    return cmf_steepness_color(map, _map_sampler, param_2, param_3, param_4, param_5);
+}
+
+float3 cmf_gaussian_slope_color(Texture2D<float4> map, SamplerState _map_sampler, CmfSlopeMap slope_map, CmfSlopeGaussian slopes, float theta, float phi, int points, float nodes[16], float weights[16])
 {
     CmfSlopeGaussian param = slopes;
     float param_1 = theta;
     float param_2 = phi;
     CmfSlopeGaussian m = cmf_slope_filtering_moments(param, param_1, param_2);
     float angle = 0.5f * atan2(2.0f * m.xy, m.xx - m.yy);
-    bool _913 = m.xy == 0.0f;
-    bool _922;
-    if (_913)
+    bool _1292 = m.xy == 0.0f;
+    bool _1301;
+    if (_1292)
     {
-        _922 = (m.xx - m.yy) == 0.0f;
+        _1301 = (m.xx - m.yy) == 0.0f;
     }
     else
     {
-        _922 = _913;
+        _1301 = _1292;
     }
-    if (_922)
+    if (_1301)
     {
         angle = 0.0f;
     }
@@ -356,26 +546,32 @@ float3 cmf_gaussian_slope_color(Texture2D<float4> map, SamplerState _map_sampler
         for (int j = 0; j < points; j++)
         {
             float q = minor * nodes[j];
-            float param_3 = domain_min;
-            float param_4 = domain_max;
-            int param_5 = wrap;
-            float2 param_6 = m.mean + float2((p * c) - (q * s), (p * s) + (q * c));
-            row += (cmf_steepness_color(map, _map_sampler, param_3, param_4, param_5, param_6) * weights[j]);
+            CmfSlopeMap param_3 = slope_map;
+            float2 param_4 = m.mean + float2((p * c) - (q * s), (p * s) + (q * c));
+            row += (cmf_slope_map_color(map, _map_sampler, param_3, param_4) * weights[j]);
         }
         sum += (row * weights[i]);
     }
     return sum;
 }
 
+float3 cmf_slope_vector_color(Texture2D<float4> map, SamplerState _map_sampler, float s_max, float2 s)
+{
+    float param = s_max;
+    float2 param_1 = s;
+    return map.SampleLevel(_map_sampler, cmf_slope_vector_uv(param, param_1), 0.0f).xyz;
+}
+
 void comp_main()
 {
     uint k = gl_GlobalInvocationID.x;
-    if (k >= uint(int(parameters.Load(144))))
+    if (k >= uint(int(parameters.Load(148))))
     {
         return;
     }
-    float4 a = asfloat(points_in.Load4((2u * k) * 16 + 0));
-    float4 b = asfloat(points_in.Load4(((2u * k) + 1u) * 16 + 0));
+    float4 a = asfloat(points_in.Load4((3u * k) * 16 + 0));
+    float4 b = asfloat(points_in.Load4(((3u * k) + 1u) * 16 + 0));
+    float4 lookup = asfloat(points_in.Load4(((3u * k) + 2u) * 16 + 0));
     CmfSlopeGaussian s;
     s.mean = a.xy;
     s.xx = b.x;
@@ -389,21 +585,41 @@ void comp_main()
     float weights[16];
     for (int i = 0; i < 16; i++)
     {
-        nodes[i] = asfloat(parameters.Load(i * 4 + 16));
-        weights[i] = asfloat(parameters.Load(i * 4 + 80));
+        nodes[i] = asfloat(parameters.Load(i * 4 + 20));
+        weights[i] = asfloat(parameters.Load(i * 4 + 84));
     }
-    float param_3 = asfloat(parameters.Load(0));
-    float param_4 = asfloat(parameters.Load(4));
-    int param_5 = int(parameters.Load(8));
-    CmfSlopeGaussian param_6 = s;
-    float param_7 = a.z;
-    float param_8 = a.w;
-    int param_9 = int(parameters.Load(12));
-    float param_10[16] = nodes;
-    float param_11[16] = weights;
-    float3 colour = cmf_gaussian_slope_color(steepness_map, _steepness_map_sampler, param_3, param_4, param_5, param_6, param_7, param_8, param_9, param_10, param_11);
-    results_out.Store4((2u * k) * 16 + 0, asuint(float4(m.mean, m.xx, m.xy)));
-    results_out.Store4(((2u * k) + 1u) * 16 + 0, asuint(float4(m.yy, colour)));
+    CmfSlopeMap _1533 = { 0, asfloat(parameters.Load(0)), asfloat(parameters.Load(4)), int(parameters.Load(8)), 0.0f };
+    CmfSlopeMap steepness = _1533;
+    CmfSlopeMap _1537 = { 1, 0.0f, 0.0f, 0, asfloat(parameters.Load(12)) };
+    CmfSlopeMap vector_map = _1537;
+    int n = int(parameters.Load(16));
+    CmfSlopeMap param_3 = steepness;
+    CmfSlopeGaussian param_4 = s;
+    float param_5 = a.z;
+    float param_6 = a.w;
+    int param_7 = n;
+    float param_8[16] = nodes;
+    float param_9[16] = weights;
+    float3 by_steepness = cmf_gaussian_slope_color(steepness_map, _steepness_map_sampler, param_3, param_4, param_5, param_6, param_7, param_8, param_9);
+    CmfSlopeMap param_10 = vector_map;
+    CmfSlopeGaussian param_11 = s;
+    float param_12 = a.z;
+    float param_13 = a.w;
+    int param_14 = n;
+    float param_15[16] = nodes;
+    float param_16[16] = weights;
+    float3 by_vector = cmf_gaussian_slope_color(slope_vector_map, _slope_vector_map_sampler, param_10, param_11, param_12, param_13, param_14, param_15, param_16);
+    results_out.Store4((5u * k) * 16 + 0, asuint(float4(m.mean, m.xx, m.xy)));
+    results_out.Store4(((5u * k) + 1u) * 16 + 0, asuint(float4(m.yy, by_steepness)));
+    results_out.Store4(((5u * k) + 2u) * 16 + 0, asuint(float4(by_vector, 0.0f)));
+    float param_17 = asfloat(parameters.Load(12));
+    float2 param_18 = lookup.xy;
+    float3 fetched = cmf_slope_vector_color_exact(slope_vector_map, _slope_vector_map_sampler, param_17, param_18);
+    float param_19 = asfloat(parameters.Load(12));
+    float2 param_20 = lookup.xy;
+    float3 sampled = cmf_slope_vector_color(slope_vector_map, _slope_vector_map_sampler, param_19, param_20);
+    results_out.Store4(((5u * k) + 3u) * 16 + 0, asuint(float4(fetched, 0.0f)));
+    results_out.Store4(((5u * k) + 4u) * 16 + 0, asuint(float4(sampled, 0.0f)));
 }
 
 [numthreads(64, 1, 1)]

@@ -13,6 +13,7 @@
 #include "headless_gl.h"
 
 #include "cmfilter/colormap/color_map_loading.h"
+#include "cmfilter/colormap/slope_color_map_loading.h"
 #include "cmfilter/io/image_reading.h"
 #include "cmfilter/microsurface/height_filtered_albedo.h"
 #include "cmfilter/microsurface/height_filtering.h"
@@ -89,6 +90,8 @@ std::string point_name(const float* p, int n)
 }
 
 double as_float(double x) { return static_cast<double>(static_cast<float>(x)); }
+
+double channel(const Rgb& c, int ch) { return ch == 0 ? c.r : ch == 1 ? c.g : c.b; }
 
 // ---------------------------------------------------------------------------
 // Colour tables (eq. 10) and the colour map C0.
@@ -190,8 +193,8 @@ void check_color_table(const std::string& lut, WrapMode wrap, SigmaSpacing spaci
         const float* r = &result[16 * k];
         const std::string where = point_name(p, 3);
         for (int ch = 0; ch < 3; ++ch) {
-            const double tv = ch == 0 ? t.r : ch == 1 ? t.g : t.b;
-            const double cv = ch == 0 ? c.r : ch == 1 ? c.g : c.b;
+            const double tv = channel(t, ch);
+            const double cv = channel(c, ch);
             exact.add(r[ch], tv, where);
             if (!std::isnan(p[0]) && !std::isnan(p[1]) && std::isfinite(p[0])) sampler.add(r[4 + ch], tv, where);
             if (std::isfinite(p[2])) {
@@ -649,63 +652,91 @@ TEST_CASE("coordinate_map: rendering through a coordinate map at full size")
 // ---------------------------------------------------------------------------
 // Slope filtering (sec. 5.2).
 
-TEST_CASE("slope: D_s's exact moments (eq. 20) and the Gaussian slope colour of a steepness map")
+TEST_CASE("slope: D_s's exact moments (eq. 20) and the Gaussian slope colour of a steepness and a slope-vector map")
 {
+    auto config = ColorConfig::load("");
+    REQUIRE(config);
     ColorMapLoadOptions load;
     load.path = kSource + "/luts/grass-rock.png";
     load.vmin = 0;
     load.vmax = 90;
-    auto config = ColorConfig::load("");
-    REQUIRE(config);
     auto loaded = load_color_map(load, *config);
     REQUIRE(loaded);
     const SteepnessColorMap map{loaded->map};
-    std::vector<float> texels;
-    for (const Rgb& c : map.by_angle.texels)
-        for (double v : {c.r, c.g, c.b}) texels.push_back(static_cast<float>(v));
+    SlopeVectorColorMapLoadOptions vector_load;
+    vector_load.path = kSource + "/luts/slope-wheel.png";
+    vector_load.s_max = 1.0;
+    auto vector_loaded = load_slope_vector_color_map(vector_load, *config);
+    REQUIRE(vector_loaded);
+    const SlopeVectorColorMap& vector_map = vector_loaded->map;
     const GLuint program = kernel("cmfilter_slope");
+    const auto texels_of = [](const std::vector<Rgb>& colours) {
+        std::vector<float> texels;
+        for (const Rgb& c : colours)
+            for (double v : {c.r, c.g, c.b}) texels.push_back(static_cast<float>(v));
+        return texels;
+    };
+    const std::vector<float> texels = texels_of(map.by_angle.texels);
     const GLuint tex = float_texture(0, {{static_cast<int>(map.by_angle.texels.size()), 1, texels.data()}}, 3,
                                      GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, GL_LINEAR, GL_LINEAR);
+    const std::vector<float> vector_texels = texels_of(vector_map.texels);
+    const GLuint vector_tex = float_texture(1, {{vector_map.width, vector_map.height, vector_texels.data()}}, 3,
+                                            GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, GL_LINEAR, GL_LINEAR);
     const GaussianSlopeColorOptions options;  // render's 12 points per axis
     const GaussHermiteRule rule = gauss_hermite_rule(options.points_per_axis);
 
-    const double half_pi = 1.57079632679489661923;
+    const double half_pi = 1.57079632679489661923, s_max = vector_map.s_max;
     std::vector<float> points;
     std::mt19937_64 rng(17);
     std::uniform_real_distribution<double> theta(0, half_pi), phi(-4, 4), mean(-0.6, 0.6), spread(0, 0.8), unit(-1, 1);
-    auto add = [&](double mx, double my, double t, double p, double sx, double sy, double rho) {
-        points.insert(points.end(), {static_cast<float>(mx), static_cast<float>(my), static_cast<float>(t),
-                                     static_cast<float>(p), static_cast<float>(sx * sx),
-                                     static_cast<float>(rho * sx * sy), static_cast<float>(sy * sy), 0.0f});
+    // A point: the slopes N(m, Sigma), the view, and a slope at which the
+    // slope-vector map is read alone.
+    auto add = [&](double mx, double my, double t, double p, double sx, double sy, double rho, double lx, double ly) {
+        points.insert(points.end(),
+                      {static_cast<float>(mx), static_cast<float>(my), static_cast<float>(t), static_cast<float>(p),
+                       static_cast<float>(sx * sx), static_cast<float>(rho * sx * sy), static_cast<float>(sy * sy),
+                       0.0f, static_cast<float>(lx), static_cast<float>(ly), 0.0f, 0.0f});
     };
-    for (int k = 0; k < 1500; ++k)
+    for (int k = 0; k < 1500; ++k) {
+        const double reach = k % 2 ? s_max : 3 * s_max;  // half within the map's domain, half up to 3 s_max
         add(k % 3 ? mean(rng) : 0.0, k % 3 ? mean(rng) : 0.0, theta(rng), phi(rng), spread(rng), spread(rng),
-            0.95 * unit(rng));
-    // Edges: head-on, grazing, 90 degrees; no spread (every facet facing
-    // away, or all facing); a steep mean slope beyond the horizon (k < -3).
-    for (double t : {0.0, 1.2, half_pi - 1e-3, half_pi}) {
-        add(0, 0, t, 0.3, 0.3, 0.3, 0);
-        add(0.2, -0.1, t, 0.3, 0, 0, 0);
-        add(4.0, 0, t, 0.0, 0.3, 0.2, 0.5);
-        add(-0.3, 0.5, t, 2.0, 0.4, 0.0, 0);
+            0.95 * unit(rng), reach * unit(rng), reach * unit(rng));
     }
-    const std::size_t count = points.size() / 8;
+    // Edges: head-on, grazing, 90 degrees; no spread (every facet facing
+    // away, or all facing); a steep mean slope beyond the horizon (k < -3);
+    // sigma 0 and a spread of 5 s_max, means beyond the vector map's domain.
+    const double texel = 2 * s_max / vector_map.width;
+    for (double t : {0.0, 1.2, half_pi - 1e-3, half_pi}) {
+        add(0, 0, t, 0.3, 0.3, 0.3, 0, 0, 0);
+        add(0.2, -0.1, t, 0.3, 0, 0, 0, s_max, -s_max);
+        add(4.0, 0, t, 0.0, 0.3, 0.2, 0.5, -s_max + 0.5 * texel, s_max - 0.5 * texel);
+        add(-0.3, 0.5, t, 2.0, 0.4, 0.0, 0, -s_max + 1.5 * texel, 0.25 * texel);
+        add(-s_max + 0.5 * texel, s_max - 2.5 * texel, t, 0.0, 0, 0, 0, 1e30, -1e30);
+        add(2.5 * s_max, -1.5 * s_max, t, 0.7, 0, 0, 0, -1e30, 1e30);
+        add(0.0, 0.0, t, -1.0, 5 * s_max, 5 * s_max, 0.5, 3 * s_max, 0.1);
+        add(1.5 * s_max, -s_max, t, 1.0, 5 * s_max, 2 * s_max, -0.3, 0.1, -3 * s_max);
+        add(3 * s_max, -2.5 * s_max, t, 2.5, 0.3, 0.3, 0, INFINITY, 0.5);
+        add(-3 * s_max, 2.5 * s_max, t, -2.5, 0.1, 0.4, 0.9, -INFINITY, kNan);
+    }
+    const std::size_t count = points.size() / 12;
     struct {
         float domain_min, domain_max;
-        std::int32_t wrap, points;
+        std::int32_t wrap;
+        float s_max;
+        std::int32_t points;
         float nodes[16], weights[16];
         std::int32_t count;
-    } parameters{0.0f, 90.0f, 0, static_cast<std::int32_t>(rule.nodes.size()), {}, {}, 0};
+    } parameters{0.0f, 90.0f, 0, static_cast<float>(s_max), static_cast<std::int32_t>(rule.nodes.size()), {}, {}, 0};
     for (std::size_t i = 0; i < rule.nodes.size(); ++i) {
         parameters.nodes[i] = static_cast<float>(rule.nodes[i]);
         parameters.weights[i] = static_cast<float>(rule.weights[i]);
     }
     parameters.count = static_cast<std::int32_t>(count);
-    const std::vector<float> r = run_kernel(program, points, count, count * 8, &parameters, sizeof parameters);
-    Tally moments, colour;
+    const std::vector<float> r = run_kernel(program, points, count, count * 20, &parameters, sizeof parameters);
+    Tally moments, colour, vector_colour, vector_exact, vector_sampler;
     for (std::size_t k = 0; k < count; ++k) {
-        const float* p = &points[8 * k];
-        const float* o = &r[8 * k];
+        const float* p = &points[12 * k];
+        const float* o = &r[20 * k];
         const std::string where = point_name(p, 7);
         const SlopeGaussian slopes{p[0], p[1], p[4], p[5], p[6]};
         const ViewAngles view{p[2], p[3]};
@@ -719,14 +750,26 @@ TEST_CASE("slope: D_s's exact moments (eq. 20) and the Gaussian slope colour of 
         moments.add(o[3] / scale, m.xy / scale, where);
         moments.add(o[4] / scale, m.yy / scale, where);
         const Rgb c = gaussian_slope_color(map, slopes, view, options);
-        colour.add(o[5], c.r, where);
-        colour.add(o[6], c.g, where);
-        colour.add(o[7], c.b, where);
+        const Rgb v = gaussian_slope_color(vector_map, slopes, view, options);
+        const Rgb at = vector_map.evaluate(p[8], p[9]);
+        const std::string lookup = point_name(p + 8, 2);
+        for (int ch = 0; ch < 3; ++ch) {
+            colour.add(o[5 + ch], channel(c, ch), where);
+            vector_colour.add(o[8 + ch], channel(v, ch), where);
+            vector_exact.add(o[12 + ch], channel(at, ch), lookup);
+            vector_sampler.add(o[16 + ch], channel(at, ch), lookup);
+        }
     }
     glDeleteTextures(1, &tex);
+    glDeleteTextures(1, &vector_tex);
     glDeleteProgram(program);
     MESSAGE("slope, " << count << " points: D_s moments " << moments.max_error << ", Gaussian slope colour "
-                      << colour.max_error);
+                      << colour.max_error << ", slope-vector map: Gaussian slope colour " << vector_colour.max_error
+                      << ", C_s exact " << vector_exact.max_error << ", C_s sampler " << vector_sampler.max_error);
     CHECK_MESSAGE(moments.max_error <= 1e-5, moments.where);
     CHECK_MESSAGE(colour.max_error <= 1e-5, colour.where);
+    CHECK_MESSAGE(vector_colour.max_error <= 1e-5, vector_colour.where);
+    CHECK_MESSAGE(vector_exact.max_error <= 1e-5, vector_exact.where);
+    // llvmpipe filters float textures with float weights (docs/shaders.md).
+    CHECK_MESSAGE(vector_sampler.max_error <= 1e-5, vector_sampler.where);
 }
