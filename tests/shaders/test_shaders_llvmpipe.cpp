@@ -11,6 +11,7 @@
 #define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
 #include "artefact_textures.h"
 #include "headless_gl.h"
+#include "patch_map_support.h"
 
 #include "cmfilter/colormap/color_map_loading.h"
 #include "cmfilter/colormap/slope_color_map_loading.h"
@@ -27,6 +28,8 @@
 #include "cmfilter/noise/noise_spec.h"
 #include "cmfilter/stack/linear_fit.h"
 #include "cmfilter/synthesis/coordinate_lookup.h"
+#include "cmfilter/synthesis/sample_box_sums.h"
+#include "cmfilter/synthesis/sample_image_pyramid.h"
 #include "cmfilter/tables/gaussian_color_table_file.h"
 #include "cmfilter/texture/moment_pyramid.h"
 #include "cmfilter/texture/moment_texture.h"
@@ -38,7 +41,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <map>
 #include <memory>
 #include <random>
 
@@ -601,52 +606,211 @@ TEST_CASE("relight: PTM-RGB, PTM-LRGB, HSH2 and HSH3 fits at lights over the hem
 // ---------------------------------------------------------------------------
 // Coordinate maps (synthesis).
 
-TEST_CASE("coordinate_map: rendering through a coordinate map at full size")
-{
-    std::mt19937_64 rng(13);
-    SampleImage sample;
-    sample.width = 11;
-    sample.height = 9;
-    sample.channels = 4;
-    std::uniform_real_distribution<double> value(0, 1);
-    for (int k = 0; k < sample.width * sample.height * sample.channels; ++k)
-        sample.pixels.push_back(static_cast<float>(value(rng)));
-    CoordinateMap map;
-    CoordinateLevel level;
-    level.width = 23;
-    level.height = 17;
-    level.sample_width = sample.width;
-    level.sample_height = sample.height;
-    std::uniform_int_distribution<int> x(0, sample.width - 1), y(0, sample.height - 1);
-    for (std::size_t t = 0; t < level.texels(); ++t) level.coords.insert(level.coords.end(), {x(rng), y(rng)});
-    map.levels.push_back(level);
-    auto reference = render_through_map(map, sample, 1);
-    REQUIRE(reference);
+namespace {
 
-    const GLuint program = kernel("cmfilter_coordinate_map");
+// Levels stacked downwards from row 0, as wide as the first
+// (shaders/cmfilter_coordinate_map.glsl): `values` per texel of each level,
+// level k given as (width, height, texels).
+struct StackedLevels {
+    int width = 0, height = 0;
+    std::vector<float> texels;
+};
+
+template <typename Level>
+StackedLevels stack_levels(const std::vector<Level>& levels, int values,
+                           const std::function<float(const Level&, std::size_t)>& value)
+{
+    StackedLevels out;
+    out.width = levels.front().width;
+    for (const Level& level : levels) out.height += level.height;
+    out.texels.assign(static_cast<std::size_t>(out.width) * out.height * values, 0.0f);
+    int row = 0;
+    for (const Level& level : levels) {
+        for (int y = 0; y < level.height; ++y)
+            for (std::size_t k = 0; k < static_cast<std::size_t>(level.width) * values; ++k)
+                out.texels[(static_cast<std::size_t>(row + y) * out.width) * values + k] =
+                    value(level, static_cast<std::size_t>(y) * level.width * values + k);
+        row += level.height;
+    }
+    return out;
+}
+
+void check_coordinate_map(GLuint program, CoordinateMap map, const SampleImage& sample, int patches,
+                          std::mt19937_64& rng)
+{
+    // Hierarchical levels 1 and 2 into the sample's pyramid levels, random
+    // (what render_at_lod reads of them is the texel each names).
+    const std::vector<SampleImage> pyramid = sample_image_pyramid(sample);
+    for (int l = 1; l <= 2; ++l) {
+        CoordinateLevel level;
+        level.width = (map.width() + (1 << l) - 1) >> l;
+        level.height = (map.height() + (1 << l) - 1) >> l;
+        level.sample_width = pyramid[l].width;
+        level.sample_height = pyramid[l].height;
+        std::uniform_int_distribution<int> x(0, level.sample_width - 1), y(0, level.sample_height - 1);
+        for (std::size_t t = 0; t < level.texels(); ++t) level.coords.insert(level.coords.end(), {x(rng), y(rng)});
+        map.levels.push_back(level);
+    }
+    const int top = static_cast<int>(std::ceil(std::log2(std::max(map.width(), map.height()))));
+    REQUIRE(top >= 3);
+    std::vector<PatchLevel> patch_levels;
+    for (int l = 1; l <= top; ++l) {
+        auto level = build_patch_level(map, l, patches, sample.periodic, 1);
+        REQUIRE(level);
+        patch_levels.push_back(std::move(*level));
+    }
+
+    // The uploads.
+    const StackedLevels coords = stack_levels<CoordinateLevel>(
+        map.levels, 2, [](const CoordinateLevel& l, std::size_t k) { return static_cast<float>(l.coords[k]); });
+    std::vector<std::int32_t> coord_texels(coords.texels.begin(), coords.texels.end());
     GLuint map_tex = 0;
     glCreateTextures(GL_TEXTURE_2D, 1, &map_tex);
-    glTextureStorage2D(map_tex, 1, GL_RG32I, level.width, level.height);
-    glTextureSubImage2D(map_tex, 0, 0, 0, level.width, level.height, GL_RG_INTEGER, GL_INT, level.coords.data());
+    glTextureStorage2D(map_tex, 1, GL_RG32I, coords.width, coords.height);
+    glTextureSubImage2D(map_tex, 0, 0, 0, coords.width, coords.height, GL_RG_INTEGER, GL_INT, coord_texels.data());
     glTextureParameteri(map_tex, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTextureParameteri(map_tex, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glBindTextureUnit(0, map_tex);
-    const GLuint sample_tex = float_texture(1, {{sample.width, sample.height, sample.pixels.data()}}, 4,
-                                            GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, GL_NEAREST, GL_NEAREST);
+    const StackedLevels samples = stack_levels<SampleImage>(
+        pyramid, sample.channels, [](const SampleImage& l, std::size_t k) { return l.pixels[k]; });
+    const GLuint sample_tex = float_texture(1, {{samples.width, samples.height, samples.texels.data()}},
+                                            sample.channels, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, GL_NEAREST,
+                                            GL_NEAREST);
+    // One layer an entry k of every footprint.
+    std::vector<std::vector<float>> layers;
+    for (int k = 0; k < patches; ++k) {
+        layers.push_back(stack_levels<PatchLevel>(patch_levels, 3, [k](const PatchLevel& l, std::size_t i) {
+                             return l.entry(i / 3, k)[i % 3];
+                         }).texels);
+    }
+    GLuint patch_tex = 0;
+    glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &patch_tex);
+    const int patch_width = patch_levels.front().width;
+    const int patch_height = static_cast<int>(layers.front().size() / (3 * patch_width));
+    glTextureStorage3D(patch_tex, 1, GL_RGB32F, patch_width, patch_height, patches);
+    for (int k = 0; k < patches; ++k)
+        glTextureSubImage3D(patch_tex, 0, 0, 0, k, patch_width, patch_height, 1, GL_RGB, GL_FLOAT, layers[k].data());
+    glTextureParameteri(patch_tex, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(patch_tex, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glBindTextureUnit(2, patch_tex);
+    const SampleBoxSums sums(sample);
+    const std::vector<float> sum_texels(sums.table().begin(), sums.table().end());
+    const GLuint sums_tex = float_texture(3, {{sample.width + 1, sample.height + 1, sum_texels.data()}},
+                                          sample.channels, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, GL_NEAREST, GL_NEAREST);
+
+    // Every output texel at L = -1 .. top + 2.
+    const int first_lod = -1, last_lod = top + 2;
     std::vector<float> points;
-    for (int j = 0; j < level.height; ++j)
-        for (int i = 0; i < level.width; ++i)
-            points.insert(points.end(), {static_cast<float>(i), static_cast<float>(j), 0, 0});
+    for (int lod = first_lod; lod <= last_lod; ++lod) {
+        const int l = std::max(lod, 0);
+        for (int j = 0; j < (map.height() + (1 << l) - 1) >> l; ++j)
+            for (int i = 0; i < (map.width() + (1 << l) - 1) >> l; ++i)
+                points.insert(points.end(), {static_cast<float>(i), static_cast<float>(j), static_cast<float>(lod), 0});
+    }
     const std::size_t count = points.size() / 4;
-    const std::int32_t parameters = static_cast<std::int32_t>(count);
-    const std::vector<float> r = run_kernel(program, points, count, count * 4, &parameters, sizeof parameters);
-    Tally error;
-    for (std::size_t k = 0; k < count * 4; ++k) error.add(r[k], reference->pixels[k], std::to_string(k / 4));
+    auto full = render_through_map(map, sample, 1);
+    REQUIRE(full);
+    struct {
+        float sample_mean[4], output_mean[4];
+        std::int32_t patches, levels, padding[2];  // CmfPatchLevels is 16-aligned (std430)
+        std::int32_t width, height, map_levels, sample_width, sample_height, sample_periodic;
+        std::int32_t count;
+    } parameters{{},
+                 {},
+                 patches,
+                 top,
+                 {},
+                 map.width(),
+                 map.height(),
+                 static_cast<std::int32_t>(map.levels.size()),
+                 sample.width,
+                 sample.height,
+                 sample.periodic ? 1 : 0,
+                 static_cast<std::int32_t>(count)};
+    for (int c = 0; c < sample.channels; ++c) {
+        double sum = 0;
+        for (std::size_t t = 0; t < full->pixels.size() / sample.channels; ++t)
+            sum += full->pixels[t * sample.channels + c];
+        parameters.sample_mean[c] = static_cast<float>(sums.means()[c]);
+        parameters.output_mean[c] =
+            static_cast<float>(sum / static_cast<double>(full->pixels.size() / sample.channels));
+    }
+    const std::vector<float> r = run_kernel(program, points, count, count * 16, &parameters, sizeof parameters);
+
+    // The library at each L (L < 0 as 0; `levels` only where the map has the level).
+    std::map<std::pair<int, LodMethod>, OutputImage> reference;
+    const auto library = [&](int lod, LodMethod method) -> const OutputImage& {
+        auto found = reference.find({lod, method});
+        if (found != reference.end()) return found->second;
+        LodOptions options;
+        options.lod = lod;
+        options.method = method;
+        options.patches = patches;
+        options.threads = 1;
+        auto out = render_at_lod(map, sample, options);
+        REQUIRE(out);
+        return reference.emplace(std::make_pair(lod, method), std::move(*out)).first->second;
+    };
+    Tally at_full, levels, point, patched;
+    const int c = sample.channels;
+    for (std::size_t k = 0; k < count; ++k) {
+        const float* p = &points[4 * k];
+        const int i = static_cast<int>(p[0]), j = static_cast<int>(p[1]), lod = std::max(static_cast<int>(p[2]), 0);
+        const std::string where = point_name(p, 3);
+        const float* o = &r[16 * k];
+        for (int ch = 0; ch < c; ++ch) {
+            if (lod == 0)
+                at_full.add(o[ch], full->pixels[(static_cast<std::size_t>(j) * full->width + i) * c + ch], where);
+            const auto at = [&](const OutputImage& out) {
+                return out.pixels[(static_cast<std::size_t>(j) * out.width + i) * c + ch];
+            };
+            if (lod < static_cast<int>(map.levels.size()))
+                levels.add(o[4 + ch], at(library(lod, LodMethod::Levels)), where);
+            point.add(o[8 + ch], at(library(lod, LodMethod::Point)), where);
+            patched.add(o[12 + ch], at(library(lod, LodMethod::Patches)), where);
+        }
+    }
     glDeleteTextures(1, &map_tex);
     glDeleteTextures(1, &sample_tex);
+    glDeleteTextures(1, &patch_tex);
+    glDeleteTextures(1, &sums_tex);
+    MESSAGE("coordinate map " << map.width() << " x " << map.height() << " into " << sample.width << " x "
+                              << sample.height << std::string(sample.periodic ? " periodic" : " clamped") << ", "
+                              << patches << " patches, L " << first_lod << " .. " << last_lod << ", " << count
+                              << " texels: full size " << at_full.max_error << ", levels " << levels.max_error
+                              << ", point " << point.max_error << ", patches " << patched.max_error);
+    // Texel copies: bit for bit.
+    CHECK_MESSAGE(at_full.max_error == 0.0, at_full.where);
+    CHECK_MESSAGE(levels.max_error == 0.0, levels.where);
+    // A bilinear read (float coordinates and lerps) and float sums.
+    CHECK_MESSAGE(point.max_error <= 1e-6, point.where);
+    CHECK_MESSAGE(patched.max_error <= 1e-5, patched.where);
+}
+
+}  // namespace
+
+TEST_CASE("coordinate_map: rendering through a coordinate map at full size and at every level of detail")
+{
+    const GLuint program = kernel("cmfilter_coordinate_map");
+    std::mt19937_64 rng(13);
+    // Every texel its own piece (footprints of more pieces than kept),
+    // into a sample that clamps.
+    const SampleImage sample = cmfilter_test::procedural_sample(11, 9, 4, false);
+    CoordinateMap scattered = cmfilter_test::empty_map(23, 17, sample.width, sample.height, false);
+    std::uniform_int_distribution<int> x(0, sample.width - 1), y(0, sample.height - 1);
+    std::vector<std::int32_t>& coords = scattered.levels[0].coords;
+    for (std::size_t k = 0; k < coords.size(); k += 2) {
+        coords[k] = x(rng);
+        coords[k + 1] = y(rng);
+    }
+    check_coordinate_map(program, scattered, sample, 2, rng);
+    // Rectangular pieces, as k-coherence synthesis copies them, into a
+    // periodic sample and one that clamps.
+    for (bool periodic : {true, false}) {
+        const SampleImage image = cmfilter_test::procedural_sample(11, 9, 4, periodic);
+        check_coordinate_map(program, cmfilter_test::random_patch_map(23, 17, 11, 9, 2, 6, periodic, 5), image, 3, rng);
+    }
     glDeleteProgram(program);
-    MESSAGE("coordinate map, " << count << " texels: " << error.max_error);
-    CHECK_MESSAGE(error.max_error == 0.0, error.where);  // texel copies: bit for bit
 }
 
 // ---------------------------------------------------------------------------

@@ -26,6 +26,13 @@ public:
     // The mean of each channel over [x0, x0 + w) x [y0, y0 + h), w, h >= 1,
     // into out[0 .. channels).
     void box_mean(std::int64_t x0, std::int64_t y0, std::int64_t w, std::int64_t h, double* out) const;
+    // What a renderer uploads to read the same box means in a shader
+    // (shaders/cmfilter_coordinate_map.glsl): each channel's mean, and the
+    // table, (width + 1) x (height + 1) x channels, element
+    // (y (width + 1) + x) channels + k the sum of channel k minus its mean
+    // over [0, x) x [0, y).
+    const std::vector<double>& means() const { return means_; }
+    const std::vector<double>& table() const { return table_; }
 
 private:
     int width_ = 0, height_ = 0, channels_ = 0;
