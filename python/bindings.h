@@ -6,6 +6,8 @@
 #pragma once
 
 #include "cmfilter/color/color_config.h"
+#include "cmfilter/microsurface/smith_lambda.h"
+#include "cmfilter/texture/pyramid_bake_options.h"
 #include "cmfilter/util/error.h"
 #include "cmfilter/util/parallel_for.h"
 
@@ -113,6 +115,16 @@ struct Directions {
 };
 Directions directions(const py::object& value, const char* what);
 
+// What every pyramid's bake takes (MomentPyramid.bake, HistogramPyramid.bake):
+// the driver and how to read it, the output, the wrap.
+void set_pyramid_bake_options(PyramidBakeOptions& options, const std::string& driver, const std::string& output,
+                              const std::string& channel, const std::string& wrap, const std::string& nonfinite,
+                              int threads);
+
+// "uncorrelated" or "correlated" (by the directions' azimuths), the option
+// `what` names: BadInput naming it otherwise.
+MaskingShadowing parse_masking(const std::string& name, const char* what);
+
 void bind_tables(py::module_& m);
 void bind_moments(py::module_& m);
 void bind_noise(py::module_& m);
@@ -121,5 +133,8 @@ void bind_coordinate_maps(py::module_& m);
 void bind_ops(py::module_& m);
 void bind_render(py::module_& m);
 void bind_synthesis(py::module_& m);
+void bind_histograms(py::module_& m);
+void bind_microsurface(py::module_& m);
+void bind_synthetic(py::module_& m);
 
 }  // namespace cmfilter::python

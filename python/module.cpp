@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // The cmfilter Python module (docs/python.md): libcmfilter's tables, moment
-// pyramids, noise, fits, texture synthesis, coordinate maps, apply, render
-// and compare on NumPy arrays. Each concern is bound in a file of its own;
-// this one holds what they share and the module itself.
+// and histogram pyramids, noise, fits, texture synthesis, coordinate maps,
+// microsurface functions, synthetic stacks, apply, render and compare on
+// NumPy arrays. Each concern is bound in a file of its own; this one holds
+// what they share and the module itself.
 #include "bindings.h"
 
 #include "cmfilter/util/version.h"
@@ -113,4 +114,7 @@ PYBIND11_MODULE(cmfilter, m)
     bind_ops(m);
     bind_render(m);
     bind_synthesis(m);
+    bind_histograms(m);
+    bind_microsurface(m);
+    bind_synthetic(m);
 }

@@ -38,16 +38,13 @@ void bind_render(py::module_& m)
             options.footprint = unwrap(parse_footprint_width(footprint));
             check(check_render_samples(samples));
             check(check_render_probes(probes));
-            if (masking != "uncorrelated" && masking != "correlated")
-                bad_argument("masking '" + masking + "' is unknown (expected uncorrelated or correlated)");
             if (slope_shading != "uncorrelated" && slope_shading != "correlated")
                 bad_argument("slope_shading '" + slope_shading + "' is unknown (expected uncorrelated or correlated)");
             options.samples = samples;
             options.seed = seed;
             options.max_probes = probes;
             options.edge_coverage = edge_coverage;
-            options.masking = masking == "correlated" ? MaskingShadowing::DirectionCorrelated
-                                                      : MaskingShadowing::Uncorrelated;
+            options.masking = parse_masking(masking, "masking");
             options.slope_shading = slope_shading == "correlated" ? SlopeShading::Correlated
                                                                   : SlopeShading::Uncorrelated;
             options.threads = threads;
