@@ -158,9 +158,10 @@ void bind_moments(py::module_& m)
         .def_static(
             "bake",
             [](const std::string& driver, const std::string& output, const std::string& channel,
-               const std::string& wrap, const std::string& nonfinite, int threads) {
+               const std::string& wrap, const std::string& nonfinite, int threads, int order) {
         MomentBakeOptions options;
         set_pyramid_bake_options(options, driver, output, channel, wrap, nonfinite, threads);
+        options.order = order;
         {
             py::gil_scoped_release release;
             unwrap(bake_moment_pyramid(options));
@@ -168,8 +169,9 @@ void bind_moments(py::module_& m)
         return open_moments(output);
             },
             py::arg("driver"), py::arg("output"), py::kw_only(), py::arg("channel") = "", py::arg("wrap") = "clamp",
-            py::arg("nonfinite") = "error", py::arg("threads") = 0,
-            "Bakes the moment pyramid of a driver image into `output` (.exr, as bake-moments) and opens it.")
+            py::arg("nonfinite") = "error", py::arg("threads") = 0, py::arg("order") = 2,
+            "Bakes the moment pyramid of a driver image into `output` (.exr, as bake-moments) and opens it; "
+            "order 4 adds the means of (f - c)^3 and (f - c)^4 for apply's mixture method.")
         .def_static("open", &open_moments, py::arg("path"), "Opens a moment pyramid file.")
         .def(
             "lookup",

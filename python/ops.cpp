@@ -123,7 +123,7 @@ void bind_ops(py::module_& m)
         py::arg("width") = 0, py::arg("height") = 0, py::arg("colormap") = "", py::arg("driver") = "",
         py::arg("histograms") = "", py::arg("ocio_config") = "", py::arg("threads") = 0,
         "The filtered image of a moment pyramid's driver through a table's colour map at level of detail lod, by "
-        "naive, gaussian, exact or reference (as `cmfilter apply`): (H, W, 3) float32 scene-linear; warnings "
+        "naive, gaussian, mixture (an order-4 pyramid), exact or reference (as `cmfilter apply`): (H, W, 3) float32 scene-linear; warnings "
         "(a clamped lod, lookups outside the table) as Python warnings.");
 
     m.def(

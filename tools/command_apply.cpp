@@ -30,6 +30,8 @@ FieldFlags apply_flags()
     flags.insert(flags.end(), {{"ApplyOptions::lod", "--lod"},
                                {"ApplyOptions::method", "--method"},
                                {"ApplyOptions::histograms_path", "--histograms H.exr"},
+                               {"ApplyOptions::moments_path", "--moments"},
+                               {"MomentBakeOptions::order 4", "bake-moments --order 4"},
                                {"ApplyOptions::driver_path", "--driver"}});
     return flags;
 }
@@ -116,7 +118,7 @@ Status run(ApplyArgs args)
         if (!r.map_path.empty()) std::cout << "  map        " << r.map_path << "\n";
         if (!r.driver_path.empty()) std::cout << "  driver     " << r.driver_path << "\n";
         if (!r.histograms_path.empty()) std::cout << "  histograms " << r.histograms_path << "\n";
-        if (r.method == FilterMethod::Gaussian)
+        if (r.method == FilterMethod::Gaussian || r.method == FilterMethod::Mixture)
             std::cout << "  lookups    " << r.table_counters.lookups << ", sigma clamped "
                       << r.table_counters.sigma_clamped << ", value clamped " << r.table_counters.value_clamped << "\n";
         if (r.texels_outside_domain > 0)
@@ -143,7 +145,9 @@ Command setup_apply(CLI::App& parent)
         ->required();
     app->add_option("-o,--output", args->output, "Image to write: .exr (scene-linear float) or .png/.jpg (sRGB, 8-bit)")
         ->required();
-    app->add_option("--method", args->method, "naive, gaussian, exact or reference")->capture_default_str();
+    app->add_option("--method", args->method,
+                    "naive, gaussian, mixture (moments of bake-moments --order 4), exact or reference")
+        ->capture_default_str();
     app->add_option("--size", args->size, "Output size WxH (default: the size of level floor(lod))");
     app->add_option("--map", args->options.map_path,
                     "Colour map image (default: the table's cmfilter:source, hash-checked)");

@@ -35,6 +35,7 @@ struct BakeMomentsArgs {
     std::string wrap = "clamp";
     std::string nan = "error";
     int threads = 0;
+    int order = 2;
     ExrOutputArgs storage;
     bool json = false;
     bool quiet = false;
@@ -71,6 +72,7 @@ Status run(const BakeMomentsArgs& args, const CLI::App& app)
     options.wrap = *wrap;
     options.nonfinite = *nan;
     options.threads = args.threads;
+    options.order = args.order;
     options.storage = *storage;
     const bool progress = !args.quiet && !args.json && isatty(STDERR_FILENO);
     if (progress) options.progress = terminal_progress("bake-moments");
@@ -104,6 +106,7 @@ Status run(const BakeMomentsArgs& args, const CLI::App& app)
         j["kind"] = kMomentPyramidKind;
         j["size"] = {info.width, info.height};
         j["levels"] = info.levels;
+        j["order"] = info.order;
         j["channel"] = info.channel;
         j["reference"] = info.reference;
         j["driver_range"] = {info.driver_min, info.driver_max};
@@ -120,7 +123,9 @@ Status run(const BakeMomentsArgs& args, const CLI::App& app)
                   << info.height << ", " << info.levels << " levels\n"
                   << "  driver     " << info.source << " (channel " << info.channel << ", " << info.source_pixel_type
                   << "), range [" << info.driver_min << ", " << info.driver_max << "]\n"
-                  << "  reference  c = " << info.reference << " (channels: mean of f - c, mean of (f - c)^2)\n"
+                  << "  reference  c = " << info.reference
+                  << (info.order == 4 ? " (channels: means of (f - c)^k, k = 1..4)\n"
+                                      : " (channels: mean of f - c, mean of (f - c)^2)\n")
                   << "  wrap       " << to_string(info.wrap) << "\n"
                   << "  storage    " << exr_output_text(*storage, "64 x 64 tiles") << "\n";
         if (storage->pixel_type == ExrPixelType::Half)
@@ -156,12 +161,17 @@ Command setup_bake_moments(CLI::App& parent)
     app->add_option("--nan", args->nan, "NaN/Inf texels: error (refuse the driver) or zero (replace by 0 and count)")
         ->capture_default_str();
     app->add_option("--threads", args->threads, "Threads (0: all cores)")->capture_default_str();
+    app->add_option("--order", args->order,
+                    "Moments per texel: 2 (f, f^2: gaussian) or 4 (also f^3, f^4: apply --method mixture)")
+        ->capture_default_str();
     add_exr_output_options(*app, args->storage, "64 64");
     app->add_flag("--json", args->json, "Print a machine-readable summary on stdout");
     app->add_flag("-q,--quiet", args->quiet, "Print nothing on success (and no progress)");
     add_update_option(*app, args->update);
     FieldFlags flags = exr_output_flags();
-    flags.insert(flags.end(), {{"DriverReadOptions::channel", "--channel"}, {"DriverReadOptions::nonfinite", "--nan"}});
+    flags.insert(flags.end(), {{"DriverReadOptions::channel", "--channel"},
+                               {"DriverReadOptions::nonfinite", "--nan"},
+                               {"MomentBakeOptions::order", "--order"}});
     return {app, [args, app] { return run(*args, *app); }, flags};
 }
 

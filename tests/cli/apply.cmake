@@ -49,11 +49,14 @@ foreach(size 0x4 12 4x-3 axb)
                       ABSENT ${A} COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod 0 --size ${size} -o ${A})
 endforeach()
 cmfilter_apply_case(NAME bad.unknown-method EXIT 3
-                    STDERR "unknown method 'box' \\(expected naive, gaussian, exact or reference\\)"
+                    STDERR "unknown method 'box' \\(expected naive, gaussian, mixture, exact or reference\\)"
                     ABSENT ${A} COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod 0 --method box -o ${A})
 cmfilter_apply_case(NAME bad.exact-without-histograms EXIT 3
                     STDERR "--method exact needs --histograms H\\.exr"
                     ABSENT ${A} COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod 0 --method exact -o ${A})
+cmfilter_apply_case(NAME bad.mixture-two-moments EXIT 3
+                    STDERR "--method mixture needs a moment pyramid of order 4; '.*apply-moments\\.exr' holds 2 moments \\(re-bake it with bake-moments --order 4\\)"
+                    ABSENT ${A} COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod 1 --method mixture -o ${A})
 cmfilter_apply_case(NAME usage.lod-not-a-number EXIT 1 STDERR "^cmfilter apply: error: .*--lod"
                     ABSENT ${A} COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod one -o ${A})
 cmfilter_apply_case(NAME usage.missing-lod EXIT 1 STDERR "^cmfilter apply: error: .*--lod is required"

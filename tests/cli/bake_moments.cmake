@@ -28,6 +28,8 @@ cmfilter_cli_case(NAME moments.bad.unknown-wrap EXIT 3 STDERR "unknown wrap mode
                   ABSENT ${M} COMMAND ${CMF} bake-moments ${FIX}/driver-37x23.png -o ${M} --wrap mirror)
 cmfilter_cli_case(NAME moments.bad.unknown-nan-policy EXIT 3 STDERR "unknown non-finite policy 'skip'"
                   ABSENT ${M} COMMAND ${CMF} bake-moments ${FIX}/driver-37x23.png -o ${M} --nan skip)
+cmfilter_cli_case(NAME moments.bad.order EXIT 3 STDERR "--order is 3 \\(expected 2 or 4\\)"
+                  ABSENT ${M} COMMAND ${CMF} bake-moments ${FIX}/driver-37x23.png -o ${M} --order 3)
 cmfilter_cli_case(NAME moments.bad.info-missing EXIT 2 STDERR "cannot read '.*no-such-moments\\.exr': no such file"
                   COMMAND ${CMF} info ${FIX}/no-such-moments.exr)
 

@@ -118,6 +118,8 @@ Expected<ArtefactInfo> read_artefact_info(const std::string& path)
                          "metadata)");
     info.description = info.kind == kLafortuneFitKind ? describe_lafortune_fit(info)
                                                       : describe_kind(info.kind, info.width, info.height);
+    if (info.kind == kMomentPyramidKind && spec.get_int_attribute("cmfilter:moment_order", 2) == 4)
+        info.description += "; m3, m4 = box means of (f - c)^3 and (f - c)^4 (order 4, the mixture method)";
     return info;
 }
 

@@ -2,11 +2,14 @@
 // The filtered colour image of a colour-mapped driver at one level of detail
 // (the `apply` command): per output pixel, the colour of the driver's
 // footprint at texture coordinates (s, t) = ((x + 0.5) / width, (y + 0.5) /
-// height) and level of detail lod, by one of four methods (the names hold
+// height) and level of detail lod, by one of five methods (the names hold
 // across cmfilter, see docs/apply.md):
 //   naive      C0(mean f): filter the driver, then map (what the paper fixes)
 //   gaussian   T(mean f, sigma_f), the prefiltered table of eq. 10, with mean
 //              and sigma from the moment pyramid (sec. 4.2)
+//   mixture    p T(a, s) + (1 - p) T(b, s), the two-Gaussian mixture of the
+//              footprint's first four moments (an order-4 moment pyramid,
+//              math/moment_mixture.h), two lookups of the same table
 //   exact      sum_b h_b C0(v_b), the footprint's histogram of a driver with
 //              few distinct values against the map (sec. 4.1, exact solutions)
 //   reference  the box mean of C0(f) over the same footprint, from level 0
@@ -27,9 +30,9 @@
 
 namespace cmfilter {
 
-enum class FilterMethod { Naive, Gaussian, Exact, Reference };
+enum class FilterMethod { Naive, Gaussian, Exact, Reference, Mixture };
 
-// "naive", "gaussian", "exact", "reference".
+// "naive", "gaussian", "exact", "reference", "mixture".
 const char* to_string(FilterMethod method);
 Expected<FilterMethod> parse_filter_method(const std::string& name);
 

@@ -25,6 +25,9 @@ namespace {
 Status check_bake_options(const MomentBakeOptions& options)
 {
     if (auto st = check_exr_output_options(options.storage, "MomentBakeOptions::storage"); !st) return st;
+    if (options.order != 2 && options.order != 4)
+        return bad_input("MomentBakeOptions::order is " + std::to_string(options.order) + " (expected 2 or 4)",
+                         "MomentBakeOptions::order");
     return check_output_path(options.output_path, "");
 }
 
@@ -66,6 +69,7 @@ Expected<MomentBakeResult> bake_moment_pyramid(const MomentBakeOptions& options,
     info.source_sha256 = *digest;
     info.source_pixel_type = driver->pixel_type;
     info.nonfinite_replaced = driver->nonfinite_replaced;
+    info.order = options.order;
 
     BoxPyramidFileOptions file;
     file.path = out->temp_path();
@@ -73,21 +77,21 @@ Expected<MomentBakeResult> bake_moment_pyramid(const MomentBakeOptions& options,
     file.width = W;
     file.height = H;
     file.channel_names = {"m1", "m2"};
+    if (info.order == 4) file.channel_names.insert(file.channel_names.end(), {"m3", "m4"});
     file.storage = options.storage;
     file.threads = options.threads;
     file.set_metadata = [&](OIIO::ImageSpec& spec) { set_moment_pyramid_metadata(spec, info, options.output_path); };
     file.progress = options.progress;
-    // Level 0's channels: f - c and (f - c)^2 about the reference value c.
+    // Level 0's channels: (f - c)^k, k = 1 .. order, about the reference value c.
     const double c = info.reference;
     const float* f = driver->values.data();
+    const int order = info.order;
     auto written = write_box_pyramid_file(file, [&](int y, int, double* planes) {
         const float* src = f + static_cast<std::size_t>(y) * W;
-        double* g1 = planes;
-        double* g2 = planes + W;
         for (int x = 0; x < W; ++x) {
             const double d = static_cast<double>(src[x]) - c;
-            g1[x] = d;
-            g2[x] = d * d;
+            double power = d;
+            for (int k = 0; k < order; ++k, power *= d) planes[static_cast<std::size_t>(k) * W + x] = power;
         }
     });
     if (!written) return written.error();

@@ -30,6 +30,9 @@
 namespace cmfilter {
 
 struct MomentBakeOptions : PyramidBakeOptions {
+    // 2: m1, m2 (the paper's two moments); 4: also the box means of (f - c)^3
+    // and (f - c)^4, for the two-Gaussian mixture (math/moment_mixture.h).
+    int order = 2;
     std::function<void(double fraction)> progress;  // optional, from the calling thread
 };
 

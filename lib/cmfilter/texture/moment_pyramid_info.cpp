@@ -17,8 +17,13 @@ void set_moment_pyramid_metadata(OIIO::ImageSpec& spec, const MomentPyramidInfo&
     spec.attribute("cmfilter:kind", kMomentPyramidKind);
     spec.attribute("cmfilter:format_version", kMomentPyramidFormatVersion);
     spec.attribute("cmfilter:version", version());
-    spec.attribute("cmfilter:equation", "per level: box means of (f - c) and (f - c)^2; mean f = c + m1, "
-                                        "sigma_f^2 = max(0, m2 - m1^2) (Heitz et al. 2013, sec. 4.2)");
+    spec.attribute("cmfilter:equation",
+                   info.order == 4 ? "per level: box means of (f - c)^k, k = 1..4; mean f = c + m1, "
+                                     "sigma_f^2 = max(0, m2 - m1^2) (Heitz et al. 2013, sec. 4.2); m3, m4 give the "
+                                     "two-Gaussian mixture of docs/moments-format.md"
+                                   : "per level: box means of (f - c) and (f - c)^2; mean f = c + m1, "
+                                     "sigma_f^2 = max(0, m2 - m1^2) (Heitz et al. 2013, sec. 4.2)");
+    spec.attribute("cmfilter:moment_order", info.order);
     spec.attribute("cmfilter:layout", "level k is max(1, W >> k) x max(1, H >> k); texel (x, y) of level k is the "
                                       "box mean over level-0 [x W / w_k, (x+1) W / w_k) x [y H / h_k, (y+1) H / h_k)");
     const auto dbl = [&](const char* name, double v) { set_double_attribute(spec, name, v); };
@@ -51,6 +56,7 @@ Expected<MomentPyramidInfo> get_moment_pyramid_metadata(const OIIO::ImageSpec& s
     info.width = spec.width;
     info.height = spec.height;
     info.levels = spec.get_int_attribute("cmfilter:levels", 0);
+    info.order = spec.get_int_attribute("cmfilter:moment_order", 2);
     info.reference = dbl("cmfilter:reference");
     info.driver_min = dbl("cmfilter:driver_min");
     info.driver_max = dbl("cmfilter:driver_max");
@@ -63,10 +69,11 @@ Expected<MomentPyramidInfo> get_moment_pyramid_metadata(const OIIO::ImageSpec& s
         std::strtoull(spec.get_string_attribute("cmfilter:nonfinite_replaced").c_str(), nullptr, 10);
     info.baked_by = spec.get_string_attribute("cmfilter:version");
     auto wrap = parse_texture_wrap(spec.get_string_attribute("cmfilter:wrap"));
-    if (!wrap || !std::isfinite(info.reference) || info.levels < 1 || spec.nchannels != 2)
+    if (!wrap || !std::isfinite(info.reference) || info.levels < 1 || (info.order != 2 && info.order != 4) ||
+        spec.nchannels != info.order)
         return bad_input("'" + path +
                          "' has inconsistent cmfilter metadata (wrap, reference "
-                         "value, level count or channel count missing or invalid)");
+                         "value, level count, moment order or channel count missing or invalid)");
     info.wrap = *wrap;
     return info;
 }

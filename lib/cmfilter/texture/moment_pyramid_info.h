@@ -21,6 +21,7 @@ struct MomentPyramidInfo {
     int width = 0, height = 0;  // level 0 = the driver's size
     int levels = 0;             // down to 1 x 1
     double reference = 0;       // c: channels hold box means of (f - c) and (f - c)^2
+    int order = 2;              // moments per texel: 2 (m1, m2) or 4 (also (f - c)^3, (f - c)^4)
     double driver_min = 0, driver_max = 0;
     std::string channel;  // the driver channel used (name, else its index)
     int channel_index = 0;

@@ -26,10 +26,10 @@ Expected<MomentTexture> MomentTexture::open(const std::string& path)
     return tex;
 }
 
-MomentSample MomentTexture::finish(bool ok, const float m[2]) const
+MomentSample MomentTexture::finish(bool ok, const float m[4]) const
 {
     MomentSample out;
-    out.ok = ok && std::isfinite(m[0]) && std::isfinite(m[1]);
+    out.ok = ok && std::all_of(m, m + info_.order, [](float v) { return std::isfinite(v); });
     if (!out.ok) {
         out.mean = info_.reference;
         return out;
@@ -41,6 +41,12 @@ MomentSample MomentTexture::finish(bool ok, const float m[2]) const
     out.mean = info_.reference + m1;
     out.variance = std::max(0.0, m2 - m1 * m1);
     out.sigma = std::sqrt(out.variance);
+    if (info_.order == 4) {
+        // Central moments from the raw ones about c (d = f - c, mean d = m1).
+        const double m3 = m[2], m4 = m[3], m1s = m1 * m1;
+        out.mu3 = m3 - 3 * m1 * m2 + 2 * m1s * m1;
+        out.mu4 = std::max(0.0, m4 - 4 * m1 * m3 + 6 * m1s * m2 - 3 * m1s * m1s);
+    }
     return out;
 }
 
@@ -56,8 +62,8 @@ MomentSample MomentTexture::lookup(float s, float t, float lod) const
     opt.interpmode = OIIO::TextureOpt::InterpBilinear;
     opt.mipmode = OIIO::TextureOpt::MipModeTrilinear;
     opt.conservative_filter = true;
-    float m[2] = {0, 0};
-    const bool ok = ts_->texture(OIIO::ustring(path_), opt, s, t, fw, 0, 0, fw, 2, m);
+    float m[4] = {0, 0, 0, 0};
+    const bool ok = ts_->texture(OIIO::ustring(path_), opt, s, t, fw, 0, 0, fw, info_.order, m);
     return finish(ok, m);
 }
 
@@ -66,8 +72,8 @@ MomentSample MomentTexture::lookup(float s, float t, float dsdx, float dtdx, flo
     OIIO::TextureOpt opt;
     opt.interpmode = OIIO::TextureOpt::InterpBilinear;
     opt.mipmode = OIIO::TextureOpt::MipModeAniso;
-    float m[2] = {0, 0};
-    const bool ok = ts_->texture(OIIO::ustring(path_), opt, s, t, dsdx, dtdx, dsdy, dtdy, 2, m);
+    float m[4] = {0, 0, 0, 0};
+    const bool ok = ts_->texture(OIIO::ustring(path_), opt, s, t, dsdx, dtdx, dsdy, dtdy, info_.order, m);
     return finish(ok, m);
 }
 

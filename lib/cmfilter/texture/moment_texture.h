@@ -24,7 +24,10 @@ struct MomentSample {
     double mean = 0;      // c + m1
     double variance = 0;  // max(0, m2 - m1^2), never NaN
     double sigma = 0;     // sqrt(variance)
-    bool ok = true;       // false if TextureSystem failed (then mean = c, variance = 0)
+    // Third and fourth central moments of the footprint, from a pyramid of
+    // order 4 (else 0): mu3 = E[(f - mean)^3], mu4 = E[(f - mean)^4].
+    double mu3 = 0, mu4 = 0;
+    bool ok = true;  // false if TextureSystem failed (then mean = c, variance = 0)
 };
 
 class MomentTexture {
@@ -58,7 +61,7 @@ public:
 
 private:
     MomentTexture() = default;
-    MomentSample finish(bool ok, const float m[2]) const;
+    MomentSample finish(bool ok, const float m[4]) const;
     std::string path_;
     MomentPyramidInfo info_;
     std::shared_ptr<OIIO::TextureSystem> ts_;

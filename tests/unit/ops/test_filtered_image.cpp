@@ -46,13 +46,15 @@ ReferenceMap reference_map()
 // Writes the map, bakes its table (options chosen per test) and a driver's
 // moments; returns the apply options for them.
 ApplyOptions inputs(const std::string& name, const std::vector<float>& f, int W, int H,
-                    const GaussianColorTableOptions& table_options)
+                    const GaussianColorTableOptions& table_options, int moment_order = 2, double vmin = 0)
 {
     const ColorConfig config = builtin_color_config();
     const std::string map_path = kDir + "/" + name + "-map.exr";
     write_image(map_path, 8, 1, 3, OIIO::TypeDesc::FLOAT, kMap.data());
     ColorMapLoadOptions load;
     load.path = map_path;
+    load.vmin = vmin;
+    load.vmax = vmin + 1;
     auto map = load_color_map(load, config);
     REQUIRE(map);
     auto table = GaussianColorTable::bake(map->map, table_options);
@@ -67,6 +69,7 @@ ApplyOptions inputs(const std::string& name, const std::vector<float>& f, int W,
     MomentBakeOptions bake;
     bake.driver_path = driver;
     bake.output_path = options.moments_path = kDir + "/" + name + "-moments.exr";
+    bake.order = moment_order;
     REQUIRE(bake_moment_pyramid(bake));
     return options;
 }
@@ -234,6 +237,93 @@ TEST_CASE("apply gaussian is T(mean, sigma) of eq. 10 and naive is C0(mean), on 
                 CHECK(std::abs(reference.rgb[i] - c0[ch]) <= 1e-6);
             }
         }
+}
+
+TEST_CASE("apply mixture gives a two-valued driver's box means, where gaussian cannot")
+{
+    // Values 0.25 and 0.75 in an irregular pattern, 16 x 16: every texel of
+    // levels 1-3 holds one of them or both in some proportion p, and its
+    // mixture is p C0(0.25) + (1 - p) C0(0.75) (moment_mixture.h: a two-point
+    // footprint is its own mixture). Both values and the map's kinks are
+    // value nodes of the table (every 0.0125), so the lookups at width s = 0
+    // are C0 itself; the width left by float32 moments, s = sqrt(t var) for
+    // t within about 1e-6 of 1, is at most a few 1e-4, a fiftieth of the
+    // first sigma row: 5e-3 bounds what it blends in.
+    const int W = 16, H = 16;
+    std::vector<float> f(W * H);
+    for (int i = 0; i < W * H; ++i) f[i] = ((i * 37 + i / 5) % 7) < 3 ? 0.25f : 0.75f;
+    GaussianColorTableOptions table;
+    table.values = 201;
+    table.sigmas = 21;
+    table.sigma_max = 0.25;
+    table.margin = 0.75;
+    table.spacing = SigmaSpacing::Linear;
+    const ApplyOptions options = inputs("mixture", f, W, H, table, 4);
+    const ReferenceMap m = reference_map();
+    for (int k = 1; k <= 3; ++k) {
+        CAPTURE(k);
+        const FilteredImage mixture = apply(options, FilterMethod::Mixture, k);
+        const FilteredImage gaussian = apply(options, FilterMethod::Gaussian, k);
+        const auto box = [&](int x, int y) { return box_mean_color(m, f, W, H, mixture.width, mixture.height, x, y); };
+        CHECK(worst_error(mixture, box) <= 5e-3);
+        CHECK(worst_error(gaussian, box) >= 0.05);  // the Gaussian of the same two moments misses by far more
+        for (float v : mixture.rgb) CHECK(std::isfinite(v));
+    }
+}
+
+TEST_CASE("apply mixture stays finite and no worse than gaussian on constant and smooth drivers")
+{
+    const int W = 32, H = 32;
+    const GaussianColorTableOptions table;
+    // Constant: every footprint has variance 0; the mixture is the Gaussian.
+    const ApplyOptions constant = inputs("mixture-constant", std::vector<float>(W * H, 0.4f), W, H, table, 4);
+    for (double lod : {0.0, 2.5, 5.0}) {
+        const FilteredImage mixture = apply(constant, FilterMethod::Mixture, lod);
+        const FilteredImage gaussian = apply(constant, FilterMethod::Gaussian, lod);
+        REQUIRE(mixture.rgb.size() == gaussian.rgb.size());
+        for (std::size_t i = 0; i < mixture.rgb.size(); ++i) CHECK(mixture.rgb[i] == gaussian.rgb[i]);
+    }
+    // Smooth, skewed: the mixture's mean absolute error against the box
+    // reference is at most the Gaussian's at every level.
+    std::vector<float> f(W * H);
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            const double u = 0.5 + 0.45 * std::sin(0.7 * x + 0.2 * y) * std::cos(0.31 * y);
+            f[y * W + x] = static_cast<float>(u * u);
+        }
+    // The same driver offset to [1000, 1001] (the map laid over that domain):
+    // the moments about c keep the shape, so the same bound holds.
+    std::vector<float> offset(f);
+    for (float& v : offset) v += 1000.0f;
+    const ApplyOptions smooth = inputs("mixture-smooth", f, W, H, table, 4);
+    const ApplyOptions far = inputs("mixture-offset", offset, W, H, table, 4, 1000.0);
+    for (const ApplyOptions* options : {&smooth, &far})
+        for (int k = 1; k <= 5; ++k) {
+            CAPTURE(k);
+            CAPTURE(options->moments_path);
+            const FilteredImage reference = apply(*options, FilterMethod::Reference, k);
+            double mixture_error = 0, gaussian_error = 0;
+            const FilteredImage mixture = apply(*options, FilterMethod::Mixture, k);
+            const FilteredImage gaussian = apply(*options, FilterMethod::Gaussian, k);
+            for (std::size_t i = 0; i < reference.rgb.size(); ++i) {
+                REQUIRE(std::isfinite(mixture.rgb[i]));
+                mixture_error += std::abs(mixture.rgb[i] - reference.rgb[i]);
+                gaussian_error += std::abs(gaussian.rgb[i] - reference.rgb[i]);
+            }
+            CHECK(mixture_error <= gaussian_error * 1.001 + 1e-6);
+        }
+}
+
+TEST_CASE("apply mixture refuses a pyramid of two moments, naming it")
+{
+    const std::vector<float> f(8 * 8, 0.5f);
+    ApplyOptions options = inputs("mixture-order-2", f, 8, 8, {});
+    options.method = FilterMethod::Mixture;
+    auto r = apply_filter(options, builtin_color_config());
+    REQUIRE(!r);
+    CHECK(r.error().kind == ErrorKind::BadInput);
+    CHECK(r.error().field == "ApplyOptions::moments_path");
+    CHECK(r.error().message.find("holds 2 moments") != std::string::npos);
 }
 
 TEST_CASE("apply clamps the level of detail and reports it")

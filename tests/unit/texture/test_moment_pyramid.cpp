@@ -59,27 +59,28 @@ struct Level {
     std::vector<float> m;  // (m1, m2) per texel
 };
 
-// Every MIP level of a two-channel file, read with ImageInput.
-std::vector<Level> read_levels(const std::string& path)
+// Every MIP level of a file of `channels` moments, read with ImageInput.
+std::vector<Level> read_levels(const std::string& path, int channels = 2)
 {
     auto in = OIIO::ImageInput::open(path);
     REQUIRE(in);
     std::vector<Level> levels;
     for (int k = 0; in->seek_subimage(0, k); ++k) {
         const OIIO::ImageSpec& spec = in->spec();
-        REQUIRE(spec.nchannels == 2);
-        Level L{spec.width, spec.height, std::vector<float>(std::size_t(spec.width) * spec.height * 2)};
-        REQUIRE(in->read_image(0, k, 0, 2, OIIO::TypeDesc::FLOAT, L.m.data()));
+        REQUIRE(spec.nchannels == channels);
+        Level L{spec.width, spec.height, std::vector<float>(std::size_t(spec.width) * spec.height * channels)};
+        REQUIRE(in->read_image(0, k, 0, channels, OIIO::TypeDesc::FLOAT, L.m.data()));
         levels.push_back(std::move(L));
     }
     return levels;
 }
 
-MomentBakeResult bake(const std::string& driver, const std::string& output)
+MomentBakeResult bake(const std::string& driver, const std::string& output, int order = 2)
 {
     MomentBakeOptions options;
     options.driver_path = driver;
     options.output_path = output;
+    options.order = order;
     auto r = bake_moment_pyramid(options);
     if (!r) FAIL(r.error().message);
     return *r;
@@ -92,7 +93,7 @@ double box_mean(const std::vector<float>& f, int W, int H, int w, int h, int x, 
     double sum = 0;
     for (const auto& b : cmfilter_test::box_weights(W, H, w, h, x, y)) {
         const double d = double(f[std::size_t(b.j) * W + b.i]) - c;
-        sum += b.weight * (power == 1 ? d : d * d);
+        sum += b.weight * std::pow(d, power);
     }
     return sum;
 }
@@ -145,6 +146,56 @@ TEST_CASE("moment pyramid levels are exact box means of level 0, any size")
             CHECK(worst <= 0);
         }
     }
+}
+
+TEST_CASE("a pyramid of order 4 holds the box means of (f - c)^3 and (f - c)^4 too, and lookups their central moments")
+{
+    for (const auto& wh : std::vector<std::pair<int, int>>{{16, 16}, {37, 23}}) {
+        const int W = wh.first, H = wh.second;
+        CAPTURE(W);
+        const auto f = random_driver(W, H, 0.0, 1.0, 11 + W);
+        const std::string driver = (test_dir() / ("order4-" + std::to_string(W) + ".exr")).string();
+        const std::string output = (test_dir() / ("order4-moments-" + std::to_string(W) + ".exr")).string();
+        write_image(driver, W, H, 1, OIIO::TypeDesc::FLOAT, f.data());
+        const MomentBakeResult r = bake(driver, output, 4);
+        CHECK(r.info.order == 4);
+        const double c = r.info.reference;
+        const auto levels = read_levels(output, 4);
+        for (int k = 0; k < int(levels.size()); ++k) {
+            const Level& L = levels[k];
+            double worst = 0;
+            for (int y = 0; y < L.h; ++y)
+                for (int x = 0; x < L.w; ++x)
+                    for (int p = 1; p <= 4; ++p) {
+                        const double ref = box_mean(f, W, H, L.w, L.h, x, y, c, p);
+                        const double got = L.m[(std::size_t(y) * L.w + x) * 4 + p - 1];
+                        worst = std::max(worst, std::abs(got - ref) - (0x1.0p-23 * std::abs(ref) + 1e-12));
+                    }
+            CAPTURE(k);
+            CHECK(worst <= 0);
+        }
+        // A lookup at a level-1 texel centre: the texel's own central moments,
+        // brute force about its own mean (float32 moments: 1e-5 absolute on
+        // moments of values in [0, 1]).
+        auto tex = MomentTexture::open(output);
+        REQUIRE(tex);
+        const int w = std::max(1, W >> 1), h = std::max(1, H >> 1);
+        for (const auto& xy : std::vector<std::pair<int, int>>{{0, 0}, {w / 2, h / 3}, {w - 1, h - 1}}) {
+            const MomentSample m = tex->lookup((xy.first + 0.5f) / w, (xy.second + 0.5f) / h, 1.0f);
+            REQUIRE(m.ok);
+            const double mean = c + box_mean(f, W, H, w, h, xy.first, xy.second, c, 1);
+            CHECK(m.mean == doctest::Approx(mean).epsilon(1e-6));
+            CHECK(std::abs(m.mu3 - box_mean(f, W, H, w, h, xy.first, xy.second, mean, 3)) <= 1e-5);
+            CHECK(std::abs(m.mu4 - box_mean(f, W, H, w, h, xy.first, xy.second, mean, 4)) <= 1e-5);
+        }
+    }
+    MomentBakeOptions bad;
+    bad.driver_path = "unused.exr";
+    bad.output_path = (test_dir() / "order3.exr").string();
+    bad.order = 3;
+    auto refused = bake_moment_pyramid(bad);
+    REQUIRE(!refused);
+    CHECK(refused.error().field == "MomentBakeOptions::order");
 }
 
 TEST_CASE("8-bit drivers are data: codes / 255, no sRGB decoding")
