@@ -50,7 +50,7 @@ void bind_render(py::module_& m)
             options.threads = threads;
             MaterialOptions material_options;
             material_options.threads = threads;
-            material_options.histograms = options.method == RenderMethod::Exact;
+            set_method_materials(options.method, material_options);
             material_options.tables.tolerance = tolerance;
             material_options.tables.plain_bound = shortcut;
             const ColorConfig config = load_config(ocio_config);

@@ -13,6 +13,7 @@
 #include "cmfilter/io/exr_output_options.h"
 #include "cmfilter/io/rgb_image_file.h"
 #include "cmfilter/math/vec3.h"
+#include "cmfilter/ops/method_choice.h"
 #include "cmfilter/render/pixel_region.h"
 #include "cmfilter/synthesis/sample_analysis.h"
 #include "cmfilter/util/error.h"
@@ -22,6 +23,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <iosfwd>
 #include <optional>
 #include <string>
 #include <utility>
@@ -165,6 +167,14 @@ std::string color_config_for_record(const std::string& ocio_config_option);
 // added (docs/json-schema.md; the schema file is docs/cmfilter.schema.json).
 constexpr int kJsonSchemaVersion = 1;
 void print_json(const std::string& command, nlohmann::json summary);
+
+// --tolerance's choice (ops/method_choice.h), for apply and bake-moments:
+// {"tolerance", "lods", "method" (null when none met), "error",
+// "reference_ms", "trials": [{"method", "bytes_per_texel", "table_lookups",
+// "errors", "worst", "worst_lod", "meets", "time_ms"}], "skipped"}; and as
+// a table of lines for the text report.
+nlohmann::json method_choice_json(const MethodChoice& choice);
+void print_method_choice(std::ostream& out, const MethodChoice& choice);
 
 // A progress callback printing "\r<command>: N%" on stderr when the percent
 // changes (a newline at 100%); callers use it only when stderr is a terminal.

@@ -9,6 +9,7 @@
 
 #include "cmfilter/ops/filtered_image.h"
 #include "cmfilter/ops/filtered_image_file.h"
+#include "cmfilter/ops/method_choice.h"
 
 #include <nlohmann/json.hpp>
 
@@ -32,7 +33,9 @@ FieldFlags apply_flags()
                                {"ApplyOptions::histograms_path", "--histograms H.exr"},
                                {"ApplyOptions::moments_path", "--moments"},
                                {"MomentBakeOptions::order 4", "bake-moments --order 4"},
-                               {"ApplyOptions::driver_path", "--driver"}});
+                               {"ApplyOptions::driver_path", "--driver"},
+                               {"MethodChoiceOptions::tolerance", "--tolerance"},
+                               {"MethodChoiceOptions::lods", "--measure-lods"}});
     return flags;
 }
 
@@ -42,6 +45,8 @@ struct ApplyArgs {
     std::string method = "gaussian";
     std::string size;
     std::string ocio_config;
+    std::optional<double> tolerance;
+    std::vector<double> measure_lods;
     bool json = false;
     bool quiet = false;
 };
@@ -70,11 +75,30 @@ Status run(ApplyArgs args)
             std::cerr << "\rapply: " << percent << "%" << (percent == 100 ? "\n" : "") << std::flush;
         };
     const Stopwatch t0;
+    // With a tolerance, the cheapest method that meets it (method_choice.h).
+    std::optional<MethodChoice> choice;
+    if (args.tolerance) {
+        MethodChoiceOptions co;
+        co.tolerance = *args.tolerance;
+        co.lods = args.measure_lods;
+        auto chosen = choose_filter_method(args.options, *config, co);
+        if (!chosen) return chosen.error();
+        if (!chosen->choice())
+            return no_method_meets(*chosen,
+                                   "'" + args.options.moments_path + "' through '" + args.options.table_path + "'");
+        choice = std::move(*chosen);
+        for (std::string& why : choice->skipped) why = name_flags(why, apply_flags());
+        args.options.method = choice->choice()->method;
+    }
     auto image = apply_filter(args.options, *config);
     if (!image) {
         if (progress) std::cerr << "\n";
         return image.error();
     }
+    if (choice)
+        image->method_choice = MethodToleranceRecord{to_string(choice->choice()->method), choice->tolerance,
+                                                     choice->choice()->worst, lod_list_text(choice->lods),
+                                                     args.options.table_path};
     if (auto st = write_filtered_image(args.output, *image, *config); !st) return st;
     const double total_ms = t0.elapsed_ms();
     for (std::string& w : image->warnings) {
@@ -106,6 +130,7 @@ Status run(ApplyArgs args)
         j["texels_outside_domain"] = r.texels_outside_domain;
         j["fraction_outside_domain"] = r.fraction_outside_domain;
         j["warnings"] = r.warnings;
+        if (choice) j["choice"] = method_choice_json(*choice);
         j["time_ms"] = total_ms;
         print_json("apply", std::move(j));
     } else if (!args.quiet) {
@@ -124,6 +149,7 @@ Status run(ApplyArgs args)
         if (r.texels_outside_domain > 0)
             std::cout << "  outside    " << r.texels_outside_domain << " driver texels ("
                       << 100 * r.fraction_outside_domain << "%) outside the table's domain\n";
+        if (choice) print_method_choice(std::cout, *choice);
         std::cout << std::setprecision(3) << "  time       " << total_ms << " ms\n";
     }
     return ok();
@@ -145,9 +171,17 @@ Command setup_apply(CLI::App& parent)
         ->required();
     app->add_option("-o,--output", args->output, "Image to write: .exr (scene-linear float) or .png/.jpg (sRGB, 8-bit)")
         ->required();
-    app->add_option("--method", args->method,
-                    "naive, gaussian, mixture (moments of bake-moments --order 4), exact or reference")
-        ->capture_default_str();
+    CLI::Option* method =
+        app->add_option("--method", args->method,
+                        "naive, gaussian, mixture (moments of bake-moments --order 4), exact or reference")
+            ->capture_default_str();
+    app->add_option("--tolerance", args->tolerance,
+                    "Choose the cheapest method whose mean CIEDE2000 against the box reference is at most DE at "
+                    "every measured LOD (naive, gaussian, mixture with order-4 moments, exact with --histograms)")
+        ->excludes(method);
+    app->add_option("--measure-lods", args->measure_lods,
+                    "LODs --tolerance measures, comma-separated (default: 1 to 8, or the top level)")
+        ->delimiter(',');
     app->add_option("--size", args->size, "Output size WxH (default: the size of level floor(lod))");
     app->add_option("--map", args->options.map_path,
                     "Colour map image (default: the table's cmfilter:source, hash-checked)");

@@ -11,6 +11,7 @@
 #include "cmfilter/util/atomic_output.h"
 #include "cmfilter/texture/histogram_pyramid.h"
 #include "cmfilter/texture/moment_pyramid.h"
+#include "cmfilter/util/temporary_file.h"
 
 #include <nlohmann/json.hpp>
 
@@ -36,11 +37,47 @@ struct BakeMomentsArgs {
     std::string nan = "error";
     int threads = 0;
     int order = 2;
+    std::optional<double> tolerance;
+    std::string table;
+    std::string map;
+    std::string ocio_config;
+    std::vector<double> measure_lods;
     ExrOutputArgs storage;
     bool json = false;
     bool quiet = false;
     bool update = false;
 };
+
+// The cheapest method for --tolerance, measured on order-4 moments baked to a
+// temporary file (and the histograms just written, when asked for).
+Expected<MethodChoice> choose_moment_order(const BakeMomentsArgs& args, const MomentBakeOptions& options,
+                                           bool histograms)
+{
+    auto config = load_color_config(args.ocio_config);
+    if (!config) return config.error();
+    auto aside = TemporaryFile::create("cmfilter-moments", ".exr");
+    if (!aside) return aside.error();
+    MomentBakeOptions four = options;
+    four.order = 4;
+    four.output_path = aside->path();
+    four.progress = nullptr;
+    four.storage.attributes.clear();
+    if (auto baked = bake_moment_pyramid(four); !baked) return baked.error();
+    ApplyOptions measured;
+    measured.moments_path = aside->path();
+    measured.table_path = args.table;
+    measured.map_path = args.map;
+    measured.driver_path = args.driver_path;
+    if (histograms) measured.histograms_path = args.histograms;
+    measured.threads = args.threads;
+    MethodChoiceOptions co;
+    co.tolerance = *args.tolerance;
+    co.lods = args.measure_lods;
+    auto choice = choose_filter_method(measured, *config, co);
+    if (!choice) return choice.error();
+    if (!choice->choice()) return no_method_meets(*choice, "'" + args.driver_path + "' through '" + args.table + "'");
+    return choice;
+}
 
 Status run(const BakeMomentsArgs& args, const CLI::App& app)
 {
@@ -76,6 +113,10 @@ Status run(const BakeMomentsArgs& args, const CLI::App& app)
     options.storage = *storage;
     const bool progress = !args.quiet && !args.json && isatty(STDERR_FILENO);
     if (progress) options.progress = terminal_progress("bake-moments");
+    if (args.tolerance && args.table.empty())
+        return bad_input("MethodChoiceOptions::tolerance needs the colour table to measure against "
+                         "(ApplyOptions::table_path)",
+                         "ApplyOptions::table_path");
     const Stopwatch t0;
     // The histogram pyramid first: it is the one refused for a driver with
     // too many distinct values, and then neither file is written.
@@ -87,6 +128,22 @@ Status run(const BakeMomentsArgs& args, const CLI::App& app)
         auto baked = bake_histogram_pyramid(h);
         if (!baked) return baked.error();
         histograms = std::move(*baked);
+    }
+    // With a tolerance: order-4 moments baked aside, every method measured
+    // against the box reference (ops/method_choice.h), and the pyramid the
+    // cheapest that meets it needs written (order 4 for mixture, else 2).
+    std::optional<MethodChoice> choice;
+    if (args.tolerance) {
+        auto chosen = choose_moment_order(args, options, histograms.has_value());
+        if (!chosen) {
+            if (histograms) std::remove(args.histograms.c_str());
+            return chosen.error();
+        }
+        choice = std::move(*chosen);
+        const MethodTrial& c = *choice->choice();
+        options.order = c.method == FilterMethod::Mixture ? 4 : 2;
+        options.method_choice = MethodToleranceRecord{to_string(c.method), choice->tolerance, c.worst,
+                                                      lod_list_text(choice->lods), args.table};
     }
     auto baked = bake_moment_pyramid(options);
     if (!baked) {
@@ -115,6 +172,7 @@ Status run(const BakeMomentsArgs& args, const CLI::App& app)
         j["source"] = info.source;
         j["source_sha256"] = info.source_sha256;
         if (histograms) j["histograms"] = {{"output", args.histograms}, {"values", histograms->values}};
+        if (choice) j["choice"] = method_choice_json(*choice);
         j["time_ms"] = {
             {"read", baked->read_ms}, {"build", baked->build_ms}, {"write", baked->write_ms}, {"total", total_ms}};
         print_json("bake-moments", std::move(j));
@@ -133,6 +191,7 @@ Status run(const BakeMomentsArgs& args, const CLI::App& app)
         if (histograms)
             std::cout << "  histograms " << args.histograms << ": " << histograms->values.size()
                       << " distinct values (exact method)\n";
+        if (choice) print_method_choice(std::cout, *choice);
         if (info.nonfinite_replaced > 0)
             std::cout << "  non-finite " << info.nonfinite_replaced << " texels replaced by 0\n";
         std::cout << std::setprecision(3) << "  time       read " << baked->read_ms << " ms, build " << baked->build_ms
@@ -161,17 +220,36 @@ Command setup_bake_moments(CLI::App& parent)
     app->add_option("--nan", args->nan, "NaN/Inf texels: error (refuse the driver) or zero (replace by 0 and count)")
         ->capture_default_str();
     app->add_option("--threads", args->threads, "Threads (0: all cores)")->capture_default_str();
-    app->add_option("--order", args->order,
-                    "Moments per texel: 2 (f, f^2: gaussian) or 4 (also f^3, f^4: apply --method mixture)")
-        ->capture_default_str();
+    CLI::Option* order =
+        app->add_option("--order", args->order,
+                        "Moments per texel: 2 (f, f^2: gaussian) or 4 (also f^3, f^4: apply --method mixture)")
+            ->capture_default_str();
+    app->add_option("--tolerance", args->tolerance,
+                    "Bake the fewest moments whose cheapest method meets this mean CIEDE2000 against the box "
+                    "reference through --table at every measured LOD (naive, gaussian: 2; mixture: 4; exact "
+                    "with --histograms)")
+        ->excludes(order);
+    app->add_option("--table", args->table, "Gaussian colour table --tolerance measures through (bake-colormap)");
+    app->add_option("--map", args->map, "Colour map image for --tolerance (default: the table's cmfilter:source)");
+    app->add_option("--measure-lods", args->measure_lods,
+                    "LODs --tolerance measures, comma-separated (default: 1 to 8, or the top level)")
+        ->delimiter(',');
+    app->add_option("--ocio-config,--colorconfig", args->ocio_config,
+                    "OpenColorIO config for --tolerance's colour map (default: $OCIO if set, else built-in)");
     add_exr_output_options(*app, args->storage, "64 64");
     app->add_flag("--json", args->json, "Print a machine-readable summary on stdout");
     app->add_flag("-q,--quiet", args->quiet, "Print nothing on success (and no progress)");
     add_update_option(*app, args->update);
     FieldFlags flags = exr_output_flags();
+    const FieldFlags map_flags = color_map_flags();
+    flags.insert(flags.end(), map_flags.begin(), map_flags.end());
     flags.insert(flags.end(), {{"DriverReadOptions::channel", "--channel"},
                                {"DriverReadOptions::nonfinite", "--nan"},
-                               {"MomentBakeOptions::order", "--order"}});
+                               {"MomentBakeOptions::order", "--order"},
+                               {"MethodChoiceOptions::tolerance", "--tolerance"},
+                               {"MethodChoiceOptions::lods", "--measure-lods"},
+                               {"ApplyOptions::table_path", "--table"},
+                               {"ApplyOptions::histograms_path", "--histograms H.exr"}});
     return {app, [args, app] { return run(*args, *app); }, flags};
 }
 

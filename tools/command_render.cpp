@@ -168,7 +168,7 @@ Status run(const RenderArgs& args)
     const bool talk = !args.quiet && !args.json;
     MaterialOptions material_options;
     material_options.threads = args.threads;
-    material_options.histograms = *method == RenderMethod::Exact;
+    set_method_materials(*method, material_options);
     material_options.tables.tolerance = args.tolerance;
     material_options.tables.plain_bound = args.shortcut;
     if (talk) material_options.note = [](const std::string& line) { std::cerr << "render: " << line << "\n"; };
@@ -239,7 +239,7 @@ Status run(const RenderArgs& args)
         j["seconds"] = image->seconds;
         j["tables"] = nlohmann::json::array();
         for (const Material& m : *materials) j["tables"].push_back(table_json(table_layer(m)));
-        if (image->method == RenderMethod::Gaussian)
+        if (image->method == RenderMethod::Gaussian || image->method == RenderMethod::Mixture)
             j["footprints"] = {{"filtered", image->footprints}, {"plain", image->plain_footprints}};
         if (!args.aov.empty()) {
             j["aov"] = {aov_paths[0], aov_paths[1], aov_paths[2]};
@@ -253,7 +253,7 @@ Status run(const RenderArgs& args)
         std::cout << image->frame_width << " x " << image->frame_height << ", " << to_string(image->method) << ", "
                   << image->samples << " ray(s) per pixel, " << hits << " pixels on a surface, " << image->seconds
                   << " s\n";
-        if (image->method == RenderMethod::Gaussian) {
+        if (image->method == RenderMethod::Gaussian || image->method == RenderMethod::Mixture) {
             for (std::size_t i = 0; i < materials->size(); ++i)
                 std::cout << "  " << describe_table(i, table_layer((*materials)[i])) << "\n";
             std::cout << "  " << image->plain_footprints << " of " << image->footprints
@@ -273,7 +273,7 @@ Command setup_render(CLI::App& parent)
     app->add_option("-o,--output", args->output, "Image to write (.exr scene-linear, .png/.jpg sRGB)")->required();
     app->add_option(
            "--method", args->method,
-           "naive, gaussian, gaussian-exact (microsurfaces: D_h's exact moments), exact (microsurfaces, or texture drivers with at most 256 values), supersample or reference")
+           "naive, gaussian, gaussian-exact (microsurfaces: D_h's exact moments), mixture (texture drivers: two Gaussians of four moments; others as gaussian), exact (microsurfaces, or texture drivers with at most 256 values), supersample or reference")
         ->capture_default_str();
     app->add_option("--size,--resolution", args->size,
                     "Render at WxH instead of the scene's camera resolution (the same camera and vertical field "

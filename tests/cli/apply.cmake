@@ -57,6 +57,33 @@ cmfilter_apply_case(NAME bad.exact-without-histograms EXIT 3
 cmfilter_apply_case(NAME bad.mixture-two-moments EXIT 3
                     STDERR "--method mixture needs a moment pyramid of order 4; '.*apply-moments\\.exr' holds 2 moments \\(re-bake it with bake-moments --order 4\\)"
                     ABSENT ${A} COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod 1 --method mixture -o ${A})
+cmfilter_apply_case(NAME bad.tolerance-none-meets EXIT 3
+                    STDERR "'.*apply-moments\\.exr' through '.*apply-table\\.exr': no method meets --tolerance 1e-09 \\(mean CIEDE2000 at LOD 1, 2, 3, 4, 5\\); the closest is [a-z]+ at [0-9.e-]+ \\(LOD [1-5]\\); not tried: mixture: '.*apply-moments\\.exr' holds 2 moments \\(mixture needs bake-moments --order 4\\); not tried: exact: no histogram pyramid \\(--histograms H\\.exr\\)"
+                    ABSENT ${A} COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod 1 --tolerance 1e-9 -o ${A})
+cmfilter_apply_case(NAME usage.tolerance-with-method EXIT 1 STDERR "--method excludes --tolerance"
+                    ABSENT ${A} COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod 1 --tolerance 1
+                                        --method gaussian -o ${A})
+# --tolerance chooses, reports every method measured and records the choice
+# in the image (read back by oiiotool): a tolerance everything meets takes
+# the cheapest, naive.
+cmfilter_apply_case(NAME tolerance.records-choice EXIT 0
+                    STDOUT "naive +4 B/texel, worst .*<- chosen.*cmfilter:method: \"naive\".*cmfilter:method_lods: \"1, 2\".*cmfilter:method_tolerance: 100"
+                    COMMAND bash -c "set -o pipefail && ($0 apply --moments $1 --table $2 --lod 1 --tolerance 100 --measure-lods 1,2 -o $3 && oiiotool --info -v $3) | tr '\\n' ' '"
+                            ${CMF} ${AM} ${AT} ${OUT}/apply-tolerance.exr)
+cmfilter_apply_case(NAME moments.tolerance-without-table EXIT 3
+                    STDERR "--tolerance needs the colour table to measure against \\(--table\\)"
+                    ABSENT ${OUT}/tolerance-moments.exr COMMAND ${CMF} bake-moments ${FIX}/apply-driver.exr -o ${OUT}/tolerance-moments.exr
+                                        --tolerance 1)
+cmfilter_apply_case(NAME moments.tolerance-none-meets EXIT 3
+                    STDERR "'.*apply-driver\\.exr' through '.*apply-table\\.exr': no method meets --tolerance 1e-09 .*the closest is"
+                    ABSENT ${OUT}/tolerance-moments.exr
+                    COMMAND ${CMF} bake-moments ${FIX}/apply-driver.exr -o ${OUT}/tolerance-moments.exr
+                            --tolerance 1e-9 --table ${AT})
+# The order follows the choice: two moments for naive, recorded with it.
+cmfilter_apply_case(NAME moments.tolerance-records-choice EXIT 0
+                    STDOUT "cmfilter:method: \"naive\".*cmfilter:method_table: \"apply-table\\.exr\".*cmfilter:moment_order: 2"
+                    COMMAND bash -c "set -o pipefail && ($0 bake-moments $1 -o $2 --tolerance 100 --table $3 --measure-lods 1 -q && oiiotool --info -v $2) | tr '\\n' ' '"
+                            ${CMF} ${FIX}/apply-driver.exr ${OUT}/tolerance-chosen-moments.exr ${AT})
 cmfilter_apply_case(NAME usage.lod-not-a-number EXIT 1 STDERR "^cmfilter apply: error: .*--lod"
                     ABSENT ${A} COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod one -o ${A})
 cmfilter_apply_case(NAME usage.missing-lod EXIT 1 STDERR "^cmfilter apply: error: .*--lod is required"

@@ -25,13 +25,16 @@ endfunction()
 cmfilter_json_case(bake-colormap "" ${CMF} bake-colormap ${LUTS}/terrain.png -o ${JOUT}/table.exr -d half)
 cmfilter_json_case(bake-colormap-tolerance "" ${CMF} bake-colormap ${LUTS}/step.png -o ${JOUT}/table-tol.exr
                    --tolerance 2 --error-samples 0)
-cmfilter_json_case(bake-moments "" ${CMF} bake-moments ${FIX}/driver-4values.png -o ${JOUT}/moments.exr
-                   --histograms ${JOUT}/histograms.exr --tile 32 32)
+cmfilter_json_case(bake-moments apply_inputs ${CMF} bake-moments ${FIX}/driver-4values.png -o ${JOUT}/moments.exr
+                   --histograms ${JOUT}/histograms.exr --tile 32 32 --tolerance 100 --table ${OUT}/apply-table.exr
+                   --measure-lods 1)
 cmfilter_json_case(bake-noise "" ${CMF} bake-noise --noise gradient:seed=3 --lod-step 1 --max-footprints 4096
                    -o ${JOUT}/sigma.exr --csv ${JOUT}/sigma.csv)
 cmfilter_json_case(noise-image "" ${CMF} noise-image --noise fbm --size 32x16 -o ${JOUT}/noise.exr)
 cmfilter_json_case(apply apply_inputs ${CMF} apply --moments ${OUT}/apply-moments.exr --table ${OUT}/apply-table.exr
                    --lod 1.5 -o ${JOUT}/applied.exr)
+cmfilter_json_case(apply-tolerance apply_inputs ${CMF} apply --moments ${OUT}/apply-moments.exr
+                   --table ${OUT}/apply-table.exr --lod 1 --tolerance 100 --measure-lods 1 -o ${JOUT}/applied-tol.exr)
 cmfilter_json_case(render "" ${CMF} render ${SC}/good.json --method gaussian -o ${JOUT}/render.exr
                    --aov ${JOUT}/render-aov)
 cmfilter_json_case(render-reference "" ${CMF} render ${SC}/good.json --method reference -o ${JOUT}/render-ref.exr)

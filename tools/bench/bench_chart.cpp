@@ -43,6 +43,9 @@ std::string bench_chart_script(const SceneBench& bench, const std::string& data_
     const bool has_gaussian_exact = std::any_of(bench.rows.begin(), bench.rows.end(), [](const BenchRow& r) {
         return r.configuration.method == RenderMethod::GaussianExact;
     });
+    const bool has_mixture = std::any_of(bench.rows.begin(), bench.rows.end(), [](const BenchRow& r) {
+        return r.configuration.method == RenderMethod::Mixture;
+    });
     std::ostringstream s;
     s << "set terminal pngcairo size 900,760 font 'sans,11'\n"
       << "set output " << quoted(png_path) << "\n"
@@ -72,6 +75,9 @@ std::string bench_chart_script(const SceneBench& bench, const std::string& data_
       << (has_gaussian_exact
               ? "     '' using ($1 == 7 ? $3 : 1/0):4 with points pt 4 ps 2 lc rgb 'dark-violet' title 'gaussian-exact (D_h moments)', \\\n"
               : "")
+      << (has_mixture
+              ? "     '' using ($1 == 8 ? $3 : 1/0):4 with points pt 6 ps 2 lc rgb 'brown' title 'mixture (textures: four moments)', \\\n"
+              : "")
       << "     '' using ($1 == 1 ? $3 : 1/0):4 with points pt 7 ps 1.6 lc rgb 'blue' title 'gaussian, sqrt sigma spacing', \\\n"
       << "     '' using ($1 == 2 ? $3 : 1/0):4 with points pt 5 ps 1.4 lc rgb 'dark-cyan' title 'gaussian, linear sigma spacing', \\\n"
       << "     '' using ($1 == 3 ? $3 : 1/0):4 with linespoints pt 13 ps 1.4 lc rgb 'dark-green' title 'supersample, rays per pixel', \\\n"
@@ -93,7 +99,7 @@ Status write_bench_chart(const SceneBench& bench, const std::string& png_path)
     {
         // series: 0 naive, 1 gaussian sqrt, 2 gaussian linear, 3 supersample
         // (in rays order), 4 other footprint widths, 5 tolerance tables or
-        // the small-sigma shortcut, 6 exact, 7 gaussian-exact. Columns: series, label, time,
+        // the small-sigma shortcut, 6 exact, 7 gaussian-exact, 8 mixture. Columns: series, label, time,
         // error, where its label goes, whether it is labelled.
         struct Point {
             int series = 0;
@@ -123,6 +129,8 @@ Status write_bench_chart(const SceneBench& bench, const std::string& png_path)
                 pt.series = 6;
             } else if (c.method == RenderMethod::GaussianExact) {
                 pt.series = 7;
+            } else if (c.method == RenderMethod::Mixture) {
+                pt.series = 8;
             }
             pt.seconds = r.seconds;
             pt.error = std::max(r.error.all.mean, 1e-4);

@@ -61,6 +61,8 @@ std::vector<BenchConfiguration> default_bench_configurations()
     c.push_back(shortcut);
     for (int spp : {1, 4, 16, 64, 256})
         c.push_back({RenderMethod::Supersample, spp, 256, 256, SigmaSpacing::Sqrt, FootprintWidth::Rms});
+    // Last: its texture pyramids of four moments stay for what follows.
+    c.push_back({RenderMethod::Mixture, 1, 256, 256, SigmaSpacing::Sqrt, FootprintWidth::Rms});
     return c;
 }
 
@@ -248,6 +250,20 @@ Expected<SceneBench> bench_scene(const Scene& scene, std::vector<Material>& mate
             mo.note = options.note;
             if (auto st = prepare_histograms(scene, materials, mo); !st) return st.error();
         }
+        if (c.method == RenderMethod::Mixture) {
+            // Four moments for the texture drivers baked in process; a scene
+            // without one would render gaussian.
+            if (std::none_of(materials.begin(), materials.end(), has_texture_driver)) {
+                if (options.note)
+                    options.note(scene.path + ": mixture: left out (no texture driver: it would be gaussian)");
+                continue;
+            }
+            MaterialOptions mo;
+            mo.threads = options.threads;
+            mo.note = options.note;
+            mo.moment_order = 4;
+            if (auto st = prepare_moment_order(scene, materials, mo); !st) return st.error();
+        }
         if (c.method == RenderMethod::GaussianExact &&
             std::none_of(materials.begin(), materials.end(), is_microsurface)) {
             if (options.note)
@@ -257,7 +273,8 @@ Expected<SceneBench> bench_scene(const Scene& scene, std::vector<Material>& mate
         BenchRow row;
         row.configuration = c;
         const TableKey key{c.table_values, c.table_sigmas, c.spacing, c.tolerance, c.shortcut};
-        if (c.method == RenderMethod::Gaussian && !(baked == key)) {
+        const bool tabled = c.method == RenderMethod::Gaussian || c.method == RenderMethod::Mixture;
+        if (tabled && !(baked == key)) {
             if (c.tolerance <= 0) {
                 GaussianColorTableOptions to;
                 to.values = c.table_values;
@@ -278,7 +295,7 @@ Expected<SceneBench> bench_scene(const Scene& scene, std::vector<Material>& mate
             if (auto st = choose_surface_tables(scene, materials, choice); !st) return st.error();
             baked = key;
         }
-        if (c.method == RenderMethod::Gaussian)
+        if (tabled)
             for (std::size_t i = 0; i < materials.size(); ++i) {
                 const ColorLayer& m = table_layer(materials[i]);
                 const TableAxes& ax = m.table.axes();

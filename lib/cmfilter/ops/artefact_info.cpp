@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/ops/artefact_info.h"
 
+#include "cmfilter/io/method_tolerance_record.h"
+
 #include "cmfilter/ops/filtered_image_file.h"
 #include "cmfilter/tables/gaussian_color_table_file.h"
 #include "cmfilter/texture/histogram_pyramid.h"
@@ -120,6 +122,9 @@ Expected<ArtefactInfo> read_artefact_info(const std::string& path)
                                                       : describe_kind(info.kind, info.width, info.height);
     if (info.kind == kMomentPyramidKind && spec.get_int_attribute("cmfilter:moment_order", 2) == 4)
         info.description += "; m3, m4 = box means of (f - c)^3 and (f - c)^4 (order 4, the mixture method)";
+    if (const auto choice = get_method_tolerance_metadata(spec))  // bake-moments / apply --tolerance
+        info.description += "; " + choice->method + " chosen as the cheapest method within mean CIEDE2000 " +
+                            format_value(*spec.find_attribute("cmfilter:method_tolerance")) + " at LOD " + choice->lods;
     return info;
 }
 

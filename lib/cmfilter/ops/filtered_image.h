@@ -25,6 +25,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -74,6 +75,10 @@ struct FilteredImage {
     double fraction_outside_domain = 0;
 
     std::vector<std::string> warnings;  // for the caller to report
+
+    // Set by a caller that chose `method` for a tolerance (method_choice.h):
+    // written as the cmfilter:method_* metadata (io/method_tolerance_record.h).
+    std::optional<MethodToleranceRecord> method_choice;
 };
 
 // Io when an input cannot be read (a missing colour map or driver recorded in

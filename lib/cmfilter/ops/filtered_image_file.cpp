@@ -21,6 +21,12 @@ Status write_filtered_image(const std::string& path, const FilteredImage& image,
     if (!image.driver_path.empty()) a.text.emplace_back("cmfilter:driver", rel(image.driver_path));
     if (!image.histograms_path.empty()) a.text.emplace_back("cmfilter:histograms", rel(image.histograms_path));
     a.numbers = {{"cmfilter:lod", image.lod}, {"cmfilter:lod_requested", image.lod_requested}};
+    if (const auto& c = image.method_choice) {  // io/method_tolerance_record.h
+        a.numbers.emplace_back("cmfilter:method_tolerance", c->tolerance);
+        a.numbers.emplace_back("cmfilter:method_error", c->error);
+        a.text.emplace_back("cmfilter:method_lods", c->lods);
+        a.text.emplace_back("cmfilter:method_table", rel(c->table));
+    }
     return write_rgb_image(path, image.width, image.height, 3, image.rgb, image.linear_space, a, config);
 }
 

@@ -277,4 +277,10 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<Material>& 
     return image;
 }
 
+void set_method_materials(RenderMethod method, MaterialOptions& options)
+{
+    options.histograms = method == RenderMethod::Exact;
+    options.moment_order = method == RenderMethod::Mixture ? 4 : 2;
+}
+
 }  // namespace cmfilter

@@ -12,17 +12,20 @@ const char* to_string(RenderMethod method)
     case RenderMethod::Exact: return "exact";
     case RenderMethod::Supersample: return "supersample";
     case RenderMethod::Reference: return "reference";
+    case RenderMethod::Mixture: return "mixture";
     }
     return "gaussian";
 }
 
 Expected<RenderMethod> parse_render_method(const std::string& text)
 {
-    for (RenderMethod m : {RenderMethod::Naive, RenderMethod::Gaussian, RenderMethod::GaussianExact,
-                           RenderMethod::Exact, RenderMethod::Supersample, RenderMethod::Reference})
+    for (RenderMethod m :
+         {RenderMethod::Naive, RenderMethod::Gaussian, RenderMethod::GaussianExact, RenderMethod::Exact,
+          RenderMethod::Supersample, RenderMethod::Reference, RenderMethod::Mixture})
         if (text == to_string(m)) return m;
-    return bad_input("method '" + text +
-                     "' is unknown (expected naive, gaussian, gaussian-exact, exact, supersample or reference)");
+    return bad_input(
+        "method '" + text +
+        "' is unknown (expected naive, gaussian, gaussian-exact, mixture, exact, supersample or reference)");
 }
 
 Status check_render_samples(int samples)

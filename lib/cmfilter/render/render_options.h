@@ -15,7 +15,9 @@
 
 namespace cmfilter {
 
-enum class RenderMethod { Naive, Gaussian, GaussianExact, Exact, Supersample, Reference };
+// Mixture: texture drivers with four moments (math/moment_mixture.h, as
+// apply's); every other driver as Gaussian.
+enum class RenderMethod { Naive, Gaussian, GaussianExact, Exact, Supersample, Reference, Mixture };
 const char* to_string(RenderMethod method);
 Expected<RenderMethod> parse_render_method(const std::string& text);
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/render/texture_footprint.h"
 
+#include "cmfilter/math/moment_mixture.h"
+
 #include "cmfilter/texture/anisotropic_probes.h"
 #include "cmfilter/texture/texture_lod.h"
 
@@ -41,6 +43,14 @@ TextureFootprint filter_texture_footprint(const ColorLayer& color, const Filtere
     out.probes = probes.count;
     out.lod = texture.lod(probes.width);
     const double lookup_lod = trilinear_lod_for_box(out.lod);  // as FilteredTexture::filter's
+    // As apply's mixture: a footprint narrower than a millionth of the
+    // driver's range squared is one Gaussian (its m3, m4 are float32 rounding).
+    MomentMixtureOptions mixture;
+    if (colour == TextureColor::Mixture) {
+        const MomentPyramidInfo& info = texture.moments().info();
+        const double range = info.driver_max - info.driver_min;
+        mixture.min_variance = 1e-6 * range * range;
+    }
     for (int j = 0; j < probes.count; ++j) {
         const double o = (j + 0.5) / probes.count - 0.5;
         const double u = h.u + o * probes.step_u, v = h.v + o * probes.step_v;
@@ -51,6 +61,13 @@ TextureFootprint filter_texture_footprint(const ColorLayer& color, const Filtere
         case TextureColor::None: break;
         case TextureColor::Naive: out.albedo += color.map.evaluate(f.mean); break;
         case TextureColor::Gaussian: out.albedo += gaussian_albedo(color, f.mean, f.sigma, out.counts); break;
+        case TextureColor::Mixture: {
+            const MomentMixture mix = moment_mixture(f.mean, f.variance, f.mu3, f.mu4, mixture);
+            out.albedo += mix.weight * gaussian_albedo(color, mix.lower, mix.sigma, out.counts);
+            if (mix.weight < 1)
+                out.albedo += (1 - mix.weight) * gaussian_albedo(color, mix.upper, mix.sigma, out.counts);
+            break;
+        }
         case TextureColor::Exact:
             out.albedo += histogram_color(*histograms, u, v, lookup_lod, bin_colors, weights);
             break;

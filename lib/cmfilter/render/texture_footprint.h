@@ -12,6 +12,9 @@
 //             lookup of the moment pyramid (FilteredTexture::filter) at the
 //             LOD whose kernel has the variance of the probe's box
 //             (trilinear_lod_for_box, texture_lod.h);
+//   mixture   p T(a, s) + (1 - p) T(b, s), the two Gaussians of one width
+//             with the probe's four moments (a pyramid of order 4,
+//             math/moment_mixture.h), each through gaussian_albedo;
 //   exact     sum_b h_b C0(v_b) (sec. 4.1), h_b the probe's histogram, a
 //             trilinear lookup of the histogram pyramid at the same LOD
 //             (needs the texture's histogram pyramid).
@@ -34,7 +37,7 @@
 
 namespace cmfilter {
 
-enum class TextureColor { None, Naive, Gaussian, Exact };
+enum class TextureColor { None, Naive, Gaussian, Mixture, Exact };
 
 struct TextureFootprint {
     Rgb albedo;        // mean of the probes' colours (black for TextureColor::None)

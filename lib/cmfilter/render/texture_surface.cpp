@@ -18,6 +18,7 @@ TextureColor texture_color(RenderMethod method)
     case RenderMethod::Gaussian:
     case RenderMethod::GaussianExact: return TextureColor::Gaussian;
     case RenderMethod::Exact: return TextureColor::Exact;
+    case RenderMethod::Mixture: return TextureColor::Mixture;
     default: return TextureColor::None;
     }
 }
@@ -66,6 +67,12 @@ Expected<std::unique_ptr<DriverRenderer>> make_texture_renderer(const Material& 
                         " reads the driver's texels at each ray's hit (naive and gaussian need only the "
                         "moments): re-bake the moments from the driver where it is now, or name the "
                         "driver itself with driver/image");
+    if (colour_method == RenderMethod::Mixture && driver.texture.moments().info().order != 4)
+        return bad_input("render: surface " + std::to_string(surface) +
+                         ": mixture needs a moment pyramid of order 4, and the texture's holds " +
+                         std::to_string(driver.texture.moments().info().order) +
+                         " moments (name a driver image, baked in process with four, or re-bake the moments with "
+                         "MomentBakeOptions::order 4)");
     std::vector<Rgb> bin_colors;
     if (colour_method == RenderMethod::Exact) {
         if (!driver.histograms)

@@ -94,6 +94,9 @@ inline bool is_microsurface(const Material& m)
     return std::holds_alternative<MicrosurfaceDriver>(m.driver) || std::holds_alternative<DisplacementDriver>(m.driver);
 }
 
+// A material coloured through a texture driver (a moment pyramid).
+inline bool has_texture_driver(const Material& m) { return std::holds_alternative<TextureDriver>(m.driver); }
+
 // The microsurface's colours, or null for a noise or texture driver.
 inline const MicrosurfaceColors* microsurface_colors(const Material& m)
 {

@@ -195,6 +195,7 @@ Expected<TextureDriver> load_image_driver(const LayerSource& layer, const ColorM
     MomentBakeOptions bake;
     bake.driver_path = path;
     bake.wrap = TextureWrap::Periodic;  // texture coordinates repeat (scene.h)
+    bake.order = options.moment_order;
     bake.threads = options.threads;
     auto driver = read_driver_and_hash(bake.driver_read());
     if (!driver) return located(driver.error(), prefix);
@@ -473,6 +474,25 @@ Status prepare_histograms(const Scene& scene, std::vector<Material>& materials, 
         if (auto st = refuse_noise_for_exact(scene, i); !st) return st;
         if (!texture) continue;  // a noise driver on a surface the scene says is a texture's: nothing to bake from
         if (auto st = load_histograms(scene, i, options, *texture, materials[i].provenance); !st) return st;
+    }
+    return ok();
+}
+
+Status prepare_moment_order(const Scene& scene, std::vector<Material>& materials, const MaterialOptions& options)
+{
+    if (materials.size() != scene.surfaces.size())
+        return bad_input("moments: " + std::to_string(materials.size()) + " materials for " +
+                         std::to_string(scene.surfaces.size()) + " surfaces");
+    for (std::size_t i = 0; i < materials.size(); ++i) {
+        auto* texture = std::get_if<TextureDriver>(&materials[i].driver);
+        if (!texture || is_microsurface(materials[i]) || !materials[i].provenance.moments_baked ||
+            scene.surfaces[i].material.driver.kind != DriverKind::Image ||
+            texture->texture.moments().info().order == options.moment_order)
+            continue;
+        auto baked =
+            load_image_driver(material_layer(scene, i), materials[i].color.map, options, materials[i].provenance);
+        if (!baked) return baked.error();
+        texture->texture = std::move(baked->texture);
     }
     return ok();
 }

@@ -50,6 +50,9 @@ struct MaterialOptions {
     // Bake each texture driver's histogram pyramid (render --method exact);
     // BadInput for a noise driver or a driver with too many distinct values.
     bool histograms = false;
+    // Moments per texel of the pyramids baked in process from driver
+    // images: 2, or 4 for render --method mixture (MomentBakeOptions::order).
+    int moment_order = 2;
     // Each surface's table: the fixed default, or fitted to a tolerance, and
     // the small-sigma shortcut (tolerance_tables.h). Its threads are these.
     TableChoiceOptions tables;
@@ -75,5 +78,12 @@ bool exact_filterable(const std::vector<Material>& materials);
 // prepare_materials does with MaterialOptions::histograms (and with its
 // errors), for materials prepared without.
 Status prepare_histograms(const Scene& scene, std::vector<Material>& materials, const MaterialOptions& options);
+
+// Re-bakes, with MaterialOptions::moment_order moments, the pyramid of every
+// surface's texture driver baked in process from a driver image with
+// another order (materials prepared for one method, then rendered with
+// mixture); a `moments` file is left as it is (the renderer names it when it
+// holds too few) and so is a microsurface's base layer.
+Status prepare_moment_order(const Scene& scene, std::vector<Material>& materials, const MaterialOptions& options);
 
 }  // namespace cmfilter

@@ -70,6 +70,7 @@ Expected<MomentBakeResult> bake_moment_pyramid(const MomentBakeOptions& options,
     info.source_pixel_type = driver->pixel_type;
     info.nonfinite_replaced = driver->nonfinite_replaced;
     info.order = options.order;
+    info.method_choice = options.method_choice;
 
     BoxPyramidFileOptions file;
     file.path = out->temp_path();

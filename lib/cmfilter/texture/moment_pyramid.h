@@ -25,6 +25,7 @@
 #include "cmfilter/math/texture_wrap.h"
 
 #include <functional>
+#include <optional>
 #include <string>
 
 namespace cmfilter {
@@ -33,6 +34,9 @@ struct MomentBakeOptions : PyramidBakeOptions {
     // 2: m1, m2 (the paper's two moments); 4: also the box means of (f - c)^3
     // and (f - c)^4, for the two-Gaussian mixture (math/moment_mixture.h).
     int order = 2;
+    // Recorded in the file when set (bake-moments --tolerance:
+    // MomentPyramidInfo::method_choice).
+    std::optional<MethodToleranceRecord> method_choice;
     std::function<void(double fraction)> progress;  // optional, from the calling thread
 };
 

@@ -39,6 +39,11 @@ void set_moment_pyramid_metadata(OIIO::ImageSpec& spec, const MomentPyramidInfo&
     spec.attribute("cmfilter:source_size", std::to_string(info.width) + "x" + std::to_string(info.height));
     spec.attribute("cmfilter:source_pixel_type", info.source_pixel_type);
     spec.attribute("cmfilter:nonfinite_replaced", std::to_string(info.nonfinite_replaced));
+    if (info.method_choice) {
+        MethodToleranceRecord record = *info.method_choice;
+        record.table = path_for_record(record.table, path);
+        set_method_tolerance_metadata(spec, record);
+    }
 }
 
 Expected<MomentPyramidInfo> get_moment_pyramid_metadata(const OIIO::ImageSpec& spec, const std::string& path)
@@ -68,6 +73,8 @@ Expected<MomentPyramidInfo> get_moment_pyramid_metadata(const OIIO::ImageSpec& s
     info.nonfinite_replaced =
         std::strtoull(spec.get_string_attribute("cmfilter:nonfinite_replaced").c_str(), nullptr, 10);
     info.baked_by = spec.get_string_attribute("cmfilter:version");
+    info.method_choice = get_method_tolerance_metadata(spec);
+    if (info.method_choice) info.method_choice->table = path_from_record(info.method_choice->table, path);
     auto wrap = parse_texture_wrap(spec.get_string_attribute("cmfilter:wrap"));
     if (!wrap || !std::isfinite(info.reference) || info.levels < 1 || (info.order != 2 && info.order != 4) ||
         spec.nchannels != info.order)

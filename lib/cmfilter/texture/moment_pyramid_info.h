@@ -5,11 +5,13 @@
 #pragma once
 
 #include "cmfilter/util/error.h"
+#include "cmfilter/io/method_tolerance_record.h"
 #include "cmfilter/math/texture_wrap.h"
 
 #include <OpenImageIO/imageio.h>
 
 #include <cstddef>
+#include <optional>
 #include <string>
 
 namespace cmfilter {
@@ -31,6 +33,10 @@ struct MomentPyramidInfo {
     std::string source_pixel_type;
     std::size_t nonfinite_replaced = 0;
     std::string baked_by;  // cmfilter version (filled in on write)
+    // Set when the order was chosen for a tolerance (bake-moments
+    // --tolerance): the method that met it against the colour table
+    // `method_choice->table` (a path as given; recorded relative to the file).
+    std::optional<MethodToleranceRecord> method_choice;
 };
 
 // Sets the cmfilter:* attributes (and the "wrapmodes" TextureSystem reads) on

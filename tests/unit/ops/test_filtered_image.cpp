@@ -12,6 +12,7 @@
 #include "cmfilter/texture/histogram_pyramid.h"
 #include "cmfilter/texture/moment_pyramid.h"
 
+#include "apply_inputs.h"
 #include "box_reference.h"
 #include "reference_convolution.h"
 #include "test_images.h"
@@ -31,49 +32,6 @@ namespace {
 
 const std::string kDir = temp_dir("cmfilter-test-filtered-image");
 
-// An 8-texel float (linear) map over [0, 1], clamp: the same texels as a
-// ReferenceMap (float values widened to double on both sides).
-const std::vector<float> kMap = {0.02f, 0.05f, 0.4f, 0.9f, 0.1f, 0.05f, 0.1f,  0.8f, 0.2f, 2.5f, 2.2f,  0.3f,
-                                 0.0f,  0.0f,  0.0f, 0.6f, 0.6f, 0.6f,  0.05f, 0.9f, 0.3f, 1.0f, 0.95f, 0.9f};
-
-ReferenceMap reference_map()
-{
-    ReferenceMap m;
-    for (std::size_t i = 0; i < kMap.size(); i += 3) m.texels.push_back({kMap[i], kMap[i + 1], kMap[i + 2]});
-    return m;
-}
-
-// Writes the map, bakes its table (options chosen per test) and a driver's
-// moments; returns the apply options for them.
-ApplyOptions inputs(const std::string& name, const std::vector<float>& f, int W, int H,
-                    const GaussianColorTableOptions& table_options, int moment_order = 2, double vmin = 0)
-{
-    const ColorConfig config = builtin_color_config();
-    const std::string map_path = kDir + "/" + name + "-map.exr";
-    write_image(map_path, 8, 1, 3, OIIO::TypeDesc::FLOAT, kMap.data());
-    ColorMapLoadOptions load;
-    load.path = map_path;
-    load.vmin = vmin;
-    load.vmax = vmin + 1;
-    auto map = load_color_map(load, config);
-    REQUIRE(map);
-    auto table = GaussianColorTable::bake(map->map, table_options);
-    REQUIRE(table);
-    GaussianColorTableInfo info;
-    info.source = map->provenance;
-    ApplyOptions options;
-    options.table_path = kDir + "/" + name + "-table.exr";
-    REQUIRE(write_gaussian_color_table(options.table_path, *table, info));
-    const std::string driver = kDir + "/" + name + "-driver.exr";
-    write_image(driver, W, H, 1, OIIO::TypeDesc::FLOAT, f.data());
-    MomentBakeOptions bake;
-    bake.driver_path = driver;
-    bake.output_path = options.moments_path = kDir + "/" + name + "-moments.exr";
-    bake.order = moment_order;
-    REQUIRE(bake_moment_pyramid(bake));
-    return options;
-}
-
 FilteredImage apply(ApplyOptions options, FilterMethod method, double lod)
 {
     options.method = method;
@@ -81,18 +39,6 @@ FilteredImage apply(ApplyOptions options, FilterMethod method, double lod)
     auto r = apply_filter(options, builtin_color_config());
     if (!r) FAIL(r.error().message);
     return *r;
-}
-
-// Brute force (tests/support/box_reference.h): the mean of C0(f) over
-// texel (x, y) of a w x h level, area-weighted.
-Rgb3 box_mean_color(const ReferenceMap& m, const std::vector<float>& f, int W, int H, int w, int h, int x, int y)
-{
-    Rgb3 sum{0, 0, 0};
-    for (const auto& b : box_weights(W, H, w, h, x, y)) {
-        const Rgb3 c = reference_map_value(m, f[std::size_t(b.j) * W + b.i]);
-        for (int ch = 0; ch < 3; ++ch) sum[ch] += b.weight * c[ch];
-    }
-    return sum;
 }
 
 // Largest |got - want| over the pixels, want given per pixel.
@@ -116,7 +62,7 @@ TEST_CASE("apply reference equals brute-force box means of C0(f), 13 x 7 driver"
     const int W = 13, H = 7;
     std::vector<float> f(W * H);
     for (int i = 0; i < W * H; ++i) f[i] = static_cast<float>(0.5 + 0.6 * std::sin(1.3 * i + 0.2 * (i % 5)));
-    const ApplyOptions options = inputs("box", f, W, H, {});
+    const ApplyOptions options = apply_inputs(kDir, "box", f, W, H, {});
     const ReferenceMap m = reference_map();
     // Levels 13x7, 6x3, 3x1 are reachable (the smaller side reaches 1 at level 2).
     for (int k = 0; k <= 2; ++k) {
@@ -142,7 +88,7 @@ TEST_CASE("apply exact equals brute-force box means of C0(f) for a driver with f
     const float values[3] = {0.125f, 0.7f, 1.25f};
     std::vector<float> f(W * H);
     for (int i = 0; i < W * H; ++i) f[i] = values[(i * 7 + i / W) % 3];
-    ApplyOptions options = inputs("exact", f, W, H, {});
+    ApplyOptions options = apply_inputs(kDir, "exact", f, W, H, {});
     HistogramBakeOptions bake;
     bake.driver_path = kDir + "/exact-driver.exr";
     bake.output_path = options.histograms_path = kDir + "/exact-histograms.exr";
@@ -192,7 +138,7 @@ TEST_CASE("apply gaussian is T(mean, sigma) of eq. 10 and naive is C0(mean), on 
     table.sigma_max = 0.25;
     table.margin = 0.75;
     table.spacing = SigmaSpacing::Linear;
-    const ApplyOptions options = inputs("nodes", f, W, H, table);
+    const ApplyOptions options = apply_inputs(kDir, "nodes", f, W, H, table);
     const ReferenceMap m = reference_map();
 
     // Brute-force mean and sigma of a level-k texel (power of two: plain blocks).
@@ -258,7 +204,7 @@ TEST_CASE("apply mixture gives a two-valued driver's box means, where gaussian c
     table.sigma_max = 0.25;
     table.margin = 0.75;
     table.spacing = SigmaSpacing::Linear;
-    const ApplyOptions options = inputs("mixture", f, W, H, table, 4);
+    const ApplyOptions options = apply_inputs(kDir, "mixture", f, W, H, table, 4);
     const ReferenceMap m = reference_map();
     for (int k = 1; k <= 3; ++k) {
         CAPTURE(k);
@@ -276,7 +222,8 @@ TEST_CASE("apply mixture stays finite and no worse than gaussian on constant and
     const int W = 32, H = 32;
     const GaussianColorTableOptions table;
     // Constant: every footprint has variance 0; the mixture is the Gaussian.
-    const ApplyOptions constant = inputs("mixture-constant", std::vector<float>(W * H, 0.4f), W, H, table, 4);
+    const ApplyOptions constant =
+        apply_inputs(kDir, "mixture-constant", std::vector<float>(W * H, 0.4f), W, H, table, 4);
     for (double lod : {0.0, 2.5, 5.0}) {
         const FilteredImage mixture = apply(constant, FilterMethod::Mixture, lod);
         const FilteredImage gaussian = apply(constant, FilterMethod::Gaussian, lod);
@@ -295,8 +242,8 @@ TEST_CASE("apply mixture stays finite and no worse than gaussian on constant and
     // the moments about c keep the shape, so the same bound holds.
     std::vector<float> offset(f);
     for (float& v : offset) v += 1000.0f;
-    const ApplyOptions smooth = inputs("mixture-smooth", f, W, H, table, 4);
-    const ApplyOptions far = inputs("mixture-offset", offset, W, H, table, 4, 1000.0);
+    const ApplyOptions smooth = apply_inputs(kDir, "mixture-smooth", f, W, H, table, 4);
+    const ApplyOptions far = apply_inputs(kDir, "mixture-offset", offset, W, H, table, 4, 1000.0);
     for (const ApplyOptions* options : {&smooth, &far})
         for (int k = 1; k <= 5; ++k) {
             CAPTURE(k);
@@ -314,10 +261,42 @@ TEST_CASE("apply mixture stays finite and no worse than gaussian on constant and
         }
 }
 
+TEST_CASE("apply mixture stays finite and no worse than gaussian where sigma reaches 10 sigma_max")
+{
+    // Uniform-looking values over [0, 1] (sigma of a coarse footprint about
+    // 0.29) through a table whose sigma axis ends at 0.029: from level 2 on,
+    // footprints are up to 10 sigma_max wide and both methods clamp sigma
+    // (LookupCounters::sigma_clamped); the mixture's components are no wider
+    // than the footprint, so it never clamps more than the Gaussian.
+    const int W = 32, H = 32;
+    std::vector<float> f(W * H);
+    for (int i = 0; i < W * H; ++i) f[i] = static_cast<float>((i * 0.6180339887) - std::floor(i * 0.6180339887));
+    GaussianColorTableOptions table;
+    table.sigma_max = 0.029;
+    const ApplyOptions options = apply_inputs(kDir, "mixture-wide", f, W, H, table, 4);
+    bool clamped = false;
+    for (int k = 1; k <= 5; ++k) {
+        CAPTURE(k);
+        const FilteredImage reference = apply(options, FilterMethod::Reference, k);
+        const FilteredImage mixture = apply(options, FilterMethod::Mixture, k);
+        const FilteredImage gaussian = apply(options, FilterMethod::Gaussian, k);
+        clamped |= gaussian.table_counters.sigma_clamped > 0;
+        double mixture_error = 0, gaussian_error = 0;
+        for (std::size_t i = 0; i < reference.rgb.size(); ++i) {
+            REQUIRE(std::isfinite(mixture.rgb[i]));
+            mixture_error += std::abs(mixture.rgb[i] - reference.rgb[i]);
+            gaussian_error += std::abs(gaussian.rgb[i] - reference.rgb[i]);
+        }
+        MESSAGE("level " << k << ": mixture " << mixture_error << ", gaussian " << gaussian_error);
+        CHECK(mixture_error <= gaussian_error * 1.001 + 1e-6);
+    }
+    CHECK(clamped);  // the sweep reached beyond the table
+}
+
 TEST_CASE("apply mixture refuses a pyramid of two moments, naming it")
 {
     const std::vector<float> f(8 * 8, 0.5f);
-    ApplyOptions options = inputs("mixture-order-2", f, 8, 8, {});
+    ApplyOptions options = apply_inputs(kDir, "mixture-order-2", f, 8, 8, {});
     options.method = FilterMethod::Mixture;
     auto r = apply_filter(options, builtin_color_config());
     REQUIRE(!r);
@@ -329,7 +308,7 @@ TEST_CASE("apply mixture refuses a pyramid of two moments, naming it")
 TEST_CASE("apply clamps the level of detail and reports it")
 {
     std::vector<float> f(8 * 8, 0.5f);
-    const ApplyOptions options = inputs("clamp", f, 8, 8, {});
+    const ApplyOptions options = apply_inputs(kDir, "clamp", f, 8, 8, {});
     const FilteredImage above = apply(options, FilterMethod::Gaussian, 7.25);
     CHECK(above.lod_clamped);
     CHECK(above.lod == 3);

@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: Apache-2.0
+// How --tolerance's method choice (ops/method_choice.h) is reported: in
+// --json and as a table in the text report.
+#include "command.h"
+
+#include <nlohmann/json.hpp>
+
+#include <iomanip>
+#include <ostream>
+
+namespace cmfilter::cli {
+
+nlohmann::json method_choice_json(const MethodChoice& choice)
+{
+    nlohmann::json trials = nlohmann::json::array();
+    for (const MethodTrial& t : choice.trials)
+        trials.push_back({{"method", to_string(t.method)},
+                          {"bytes_per_texel", t.bytes_per_texel},
+                          {"table_lookups", t.table_lookups},
+                          {"errors", t.errors},
+                          {"worst", t.worst},
+                          {"worst_lod", t.worst_lod},
+                          {"meets", t.meets},
+                          {"time_ms", t.time_ms}});
+    const MethodTrial* c = choice.choice();
+    return {{"tolerance", choice.tolerance},
+            {"lods", choice.lods},
+            {"method", c ? nlohmann::json(to_string(c->method)) : nlohmann::json(nullptr)},
+            {"error", c ? nlohmann::json(c->worst) : nlohmann::json(nullptr)},
+            {"reference_ms", choice.reference_ms},
+            {"trials", std::move(trials)},
+            {"skipped", choice.skipped}};
+}
+
+void print_method_choice(std::ostream& out, const MethodChoice& choice)
+{
+    const auto flags = out.flags();
+    const auto precision = out.precision();
+    out << std::setprecision(3) << "  tolerance  mean CIEDE2000 <= " << choice.tolerance << " at LOD "
+        << lod_list_text(choice.lods) << ":\n";
+    for (std::size_t i = 0; i < choice.trials.size(); ++i) {
+        const MethodTrial& t = choice.trials[i];
+        out << "    " << std::left << std::setw(9) << to_string(t.method) << std::right << std::setw(4)
+            << t.bytes_per_texel << " B/texel, worst " << std::setw(7) << t.worst << " (LOD " << t.worst_lod << "), "
+            << std::setw(7) << t.time_ms << " ms"
+            << (choice.chosen == i ? "  <- chosen"
+                : t.meets          ? "  meets"
+                                   : "")
+            << "\n";
+    }
+    for (const std::string& why : choice.skipped) out << "    not tried: " << why << "\n";
+    out.flags(flags);
+    out.precision(precision);
+}
+
+}  // namespace cmfilter::cli
