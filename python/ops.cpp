@@ -5,6 +5,7 @@
 #include "bindings.h"
 
 #include "cmfilter/ops/filtered_image.h"
+#include "cmfilter/ops/method_choice.h"
 #include "cmfilter/ops/image_comparison.h"
 
 #include <pybind11/stl.h>
@@ -125,6 +126,58 @@ void bind_ops(py::module_& m)
         "The filtered image of a moment pyramid's driver through a table's colour map at level of detail lod, by "
         "naive, gaussian, mixture (an order-4 pyramid), exact or reference (as `cmfilter apply`): (H, W, 3) float32 scene-linear; warnings "
         "(a clamped lod, lookups outside the table) as Python warnings.");
+
+    m.def(
+        "choose_method",
+        [](const std::string& moments, const std::string& table, double tolerance, const std::vector<double>& lods,
+           const std::vector<std::string>& candidates, const std::string& colormap, const std::string& driver,
+           const std::string& histograms, const std::string& ocio_config, int threads) {
+        ApplyOptions inputs;
+        inputs.moments_path = moments;
+        inputs.table_path = table;
+        inputs.map_path = colormap;
+        inputs.driver_path = driver;
+        inputs.histograms_path = histograms;
+        inputs.threads = threads;
+        MethodChoiceOptions options;
+        options.tolerance = tolerance;
+        options.lods = lods;
+        for (const std::string& c : candidates) options.candidates.push_back(unwrap(parse_filter_method(c)));
+        const ColorConfig config = load_config(ocio_config);
+        const MethodChoice choice = [&] {
+            py::gil_scoped_release release;
+            return unwrap(choose_filter_method(inputs, config, options));
+        }();
+        py::list trials;
+        for (const MethodTrial& t : choice.trials) {
+            py::dict d;
+            d["method"] = to_string(t.method);
+            d["bytes_per_texel"] = t.bytes_per_texel;
+            d["table_lookups"] = t.table_lookups;
+            d["errors"] = t.errors;
+            d["worst"] = t.worst;
+            d["worst_lod"] = t.worst_lod;
+            d["meets"] = t.meets;
+            d["time_ms"] = t.time_ms;
+            trials.append(std::move(d));
+        }
+        py::dict out;
+        out["tolerance"] = choice.tolerance;
+        out["lods"] = choice.lods;
+        out["method"] = choice.choice() ? py::object(py::str(to_string(choice.choice()->method))) : py::none();
+        out["error"] = choice.choice() ? py::object(py::float_(choice.choice()->worst)) : py::none();
+        out["trials"] = trials;
+        out["skipped"] = choice.skipped;
+        out["reference_ms"] = choice.reference_ms;
+        return out;
+        },
+        py::arg("moments"), py::arg("table"), py::kw_only(), py::arg("tolerance"),
+        py::arg("lods") = std::vector<double>{}, py::arg("candidates") = std::vector<std::string>{},
+        py::arg("colormap") = "", py::arg("driver") = "", py::arg("histograms") = "", py::arg("ocio_config") = "",
+        py::arg("threads") = 0,
+        "The cheapest method (naive, gaussian, mixture, exact) whose mean CIEDE2000 against the box reference is at "
+        "most tolerance at every LOD in lods (default 1..8), as `cmfilter apply --tolerance`: a dict with the method "
+        "(None when nothing meets it), its error, and every candidate's bytes per texel, error per LOD and time.");
 
     m.def(
         "compare",

@@ -107,3 +107,29 @@ def test_compare_errors(tmp_path):
     assert e.value.kind == "io"
     with pytest.raises(cmfilter.Error, match="non-finite"):
         cmfilter.compare(np.full((1, 1, 3), np.nan), np.zeros((1, 1, 3)))
+
+
+def test_choose_method_measures_naive_as_numpy_and_skimage_do(baked, luts):
+    # naive's error at LOD k: the mean over the 2^k blocks of CIEDE2000
+    # (scikit-image) between C0 of the block mean of f and the block mean of
+    # C0(f), both in NumPy; a tolerance everything meets takes naive, the
+    # cheapest, and one nothing meets leaves the method None.
+    f, moments, table = baked
+    texels = linear_colormap(luts / "terrain.png")
+    choice = cmfilter.choose_method(moments, table, tolerance=100, lods=[1, 2])
+    assert choice["method"] == "naive" and choice["lods"] == [1, 2]
+    assert [t["method"] for t in choice["trials"]] == ["naive", "gaussian"]
+    assert any("mixture" in s for s in choice["skipped"])
+    naive = choice["trials"][0]
+    for i, k in enumerate([1, 2]):
+        n = 16 >> k
+        blocks = lambda x: x.reshape(n, 16 // n, n, 16 // n, *x.shape[2:]).mean(axis=(1, 3))
+        got = np.clip(c0(texels, 0, 1, blocks(f)), 0, 1)
+        want = np.clip(blocks(c0(texels, 0, 1, f)), 0, 1)
+        de = skimage.color.deltaE_ciede2000(skimage.color.rgb2lab(srgb_encode(got)), skimage.color.rgb2lab(srgb_encode(want)))
+        assert de.mean() > 0.05  # the test means something
+        assert naive["errors"][i] == pytest.approx(de.mean(), rel=0.02, abs=0.01)
+    none = cmfilter.choose_method(moments, table, tolerance=1e-9, lods=[1])
+    assert none["method"] is None and none["error"] is None
+    with pytest.raises(cmfilter.Error, match="tolerance 0 is invalid"):
+        cmfilter.choose_method(moments, table, tolerance=0)

@@ -413,6 +413,24 @@ std::vector<Material> exact_materials_of(const Scene& scene)
     return std::move(*materials);
 }
 
+// The box mean of C0 over the 32 x 32 level-0 texels (of an n x n driver f,
+// repeating) around the hit of pixel (x, y)'s centre ray: the pixels of the
+// aligned straight-down scenes below, computed here.
+Rgb aligned_box_mean(const Scene& scene, const Camera& camera, const ColorMap& map, const std::vector<float>& f, int n,
+                     int x, int y)
+{
+    const auto hit = intersect_scene(scene, camera.ray(x + 0.5, y + 0.5));
+    REQUIRE(hit);
+    const long x0 = std::lround(hit->hit.u * n) - 16, y0 = std::lround(hit->hit.v * n) - 16;
+    Rgb want;
+    for (long j = 0; j < 32; ++j)
+        for (long i = 0; i < 32; ++i) {
+            const long tx = ((x0 + i) % n + n) % n, ty = ((y0 + j) % n + n) % n;
+            want += (1.0 / 1024) * map.evaluate(f[static_cast<std::size_t>(ty * n + tx)]);
+        }
+    return want;
+}
+
 }  // namespace
 
 TEST_CASE("exact on a driver with four values matches the reference within 0.5 mean CIEDE2000")
@@ -458,15 +476,7 @@ TEST_CASE("exact on a driver with four values matches the reference within 0.5 m
     double worst = 0;
     for (int y = 0; y < 32; ++y)
         for (int x = 0; x < 32; ++x) {
-            const auto hit = intersect_scene(scene, camera->ray(x + 0.5, y + 0.5));
-            REQUIRE(hit);
-            const long x0 = std::lround(hit->hit.u * n) - 16, y0 = std::lround(hit->hit.v * n) - 16;
-            Rgb want;
-            for (long j = 0; j < 32; ++j)
-                for (long i = 0; i < 32; ++i) {
-                    const long tx = ((x0 + i) % n + n) % n, ty = ((y0 + j) % n + n) % n;
-                    want += (1.0 / 1024) * materials[0].color.map.evaluate(f[static_cast<std::size_t>(ty * n + tx)]);
-                }
+            const Rgb want = aligned_box_mean(scene, *camera, materials[0].color.map, f, n, x, y);
             const std::size_t p = static_cast<std::size_t>(y) * 32 + static_cast<std::size_t>(x);
             worst = std::max({worst, std::abs(exact->rgb[3 * p] - want.r), std::abs(exact->rgb[3 * p + 1] - want.g),
                               std::abs(exact->rgb[3 * p + 2] - want.b)});
@@ -512,15 +522,7 @@ TEST_CASE("mixture on a two-valued driver is the box mean of C0 over the footpri
     double worst_mixture = 0, worst_gaussian = 0;
     for (int y = 0; y < 32; ++y)
         for (int x = 0; x < 32; ++x) {
-            const auto hit = intersect_scene(scene, camera->ray(x + 0.5, y + 0.5));
-            REQUIRE(hit);
-            const long x0 = std::lround(hit->hit.u * n) - 16, y0 = std::lround(hit->hit.v * n) - 16;
-            Rgb want;
-            for (long j = 0; j < 32; ++j)
-                for (long i = 0; i < 32; ++i) {
-                    const long tx = ((x0 + i) % n + n) % n, ty = ((y0 + j) % n + n) % n;
-                    want += (1.0 / 1024) * layer.map.evaluate(f[static_cast<std::size_t>(ty * n + tx)]);
-                }
+            const Rgb want = aligned_box_mean(scene, *camera, layer.map, f, n, x, y);
             const std::size_t p = static_cast<std::size_t>(y) * 32 + static_cast<std::size_t>(x);
             for (int c = 0; c < 3; ++c) {
                 const double w = c == 0 ? want.r : c == 1 ? want.g : want.b;
