@@ -15,6 +15,9 @@
 #include "cmfilter/math/vec3.h"
 #include "cmfilter/ops/method_choice.h"
 #include "cmfilter/render/pixel_region.h"
+#include "cmfilter/render/render_options.h"
+#include "cmfilter/scene/material.h"
+#include "cmfilter/scene/scene.h"
 #include "cmfilter/synthesis/sample_analysis.h"
 #include "cmfilter/util/error.h"
 
@@ -175,6 +178,20 @@ void print_json(const std::string& command, nlohmann::json summary);
 // a table of lines for the text report.
 nlohmann::json method_choice_json(const MethodChoice& choice);
 void print_method_choice(std::ostream& out, const MethodChoice& choice);
+
+// render --method auto (render_method_choice.cpp): each texture surface's
+// cheapest method for the tolerance, measured on its driver and table as
+// apply --tolerance measures (temporary files); BadInput naming the surface
+// when none meets it. Surfaces of other drivers are left out.
+struct SurfaceMethodChoice {
+    std::size_t surface = 0;
+    MethodChoice choice;
+};
+Expected<std::vector<SurfaceMethodChoice>> choose_texture_methods(const Scene& scene,
+                                                                  const std::vector<Material>& materials,
+                                                                  const ColorConfig& config,
+                                                                  const MethodChoiceOptions& options, int threads);
+RenderMethod render_method_of(FilterMethod method);
 
 // A progress callback printing "\r<command>: N%" on stderr when the percent
 // changes (a newline at 100%); callers use it only when stderr is a terminal.

@@ -46,6 +46,7 @@ struct RenderArgs {
     std::string size;    // WxH replacing the scene's camera resolution
     std::string region;  // x0,y0,x1,y1 of the frame (after --size)
     std::optional<double> tolerance;
+    std::vector<double> measure_lods;
     std::optional<double> shortcut;
     std::string ocio_config;
     int threads = 0;
@@ -111,10 +112,31 @@ nlohmann::json table_json(const ColorLayer& m)
     return j;
 }
 
+// The fields render's errors name, as its flags.
+FieldFlags render_flags()
+{
+    FieldFlags flags = color_map_flags();
+    flags.insert(flags.end(), {{"RenderOptions::region", "--region"},
+                               {"RenderOptions::samples", "--spp"},
+                               {"RenderOptions::max_probes", "--probes"},
+                               {"TableChoiceOptions::tolerance", "--tolerance"},
+                               {"TableChoiceOptions::plain_bound", "--shortcut"},
+                               {"MethodChoiceOptions::tolerance", "--tolerance"},
+                               {"MethodChoiceOptions::lods", "--measure-lods"},
+                               {"MomentBakeOptions::order 4", "bake-moments --order 4"},
+                               {"ApplyOptions::histograms_path", "a histogram pyramid"}});
+    return flags;
+}
+
 Status run(const RenderArgs& args)
 {
     if (auto st = check_rgb_image_output(args.output); !st) return st;
-    auto method = parse_render_method(args.method);
+    // auto: each texture surface's method chosen for --tolerance
+    // (render_method_choice.cpp); every other surface gaussian.
+    const bool automatic = args.method == "auto";
+    if (automatic && !args.tolerance)
+        return bad_input("--method auto chooses each texture's method for a tolerance: it needs --tolerance DE");
+    auto method = parse_render_method(automatic ? "gaussian" : args.method);
     if (!method) return method.error();
     auto footprint = parse_footprint_width(args.footprint);
     if (!footprint) return footprint.error();
@@ -174,6 +196,32 @@ Status run(const RenderArgs& args)
     if (talk) material_options.note = [](const std::string& line) { std::cerr << "render: " << line << "\n"; };
     auto materials = prepare_materials(*scene, *config, material_options);
     if (!materials) return materials.error();
+    std::vector<SurfaceMethodChoice> choices;
+    std::vector<RenderMethod> texture_methods;
+    if (automatic) {
+        MethodChoiceOptions co;
+        co.tolerance = *args.tolerance;
+        co.lods = args.measure_lods;
+        if (talk) std::cerr << "render: measuring each texture's methods for --tolerance " << *args.tolerance << "\n";
+        auto chosen = choose_texture_methods(*scene, *materials, *config, co, args.threads);
+        if (!chosen) return chosen.error();
+        choices = std::move(*chosen);
+        texture_methods.assign(materials->size(), RenderMethod::Gaussian);
+        bool mixture = false;
+        for (SurfaceMethodChoice& c : choices) {
+            for (std::string& why : c.choice.skipped) why = name_flags(why, render_flags());
+            const RenderMethod m = render_method_of(c.choice.choice()->method);
+            texture_methods[c.surface] = m;
+            mixture |= m == RenderMethod::Mixture;
+            if (m == RenderMethod::Exact)
+                if (auto st = prepare_surface_histograms(*scene, *materials, c.surface, material_options); !st)
+                    return st;
+        }
+        if (mixture) {
+            material_options.moment_order = 4;
+            if (auto st = prepare_moment_order(*scene, *materials, material_options); !st) return st;
+        }
+    }
 
     RenderOptions options;
     options.method = *method;
@@ -188,6 +236,7 @@ Status run(const RenderArgs& args)
                                                    : MaskingShadowing::Uncorrelated;
     options.slope_shading = args.slope_shading == "correlated" ? SlopeShading::Correlated : SlopeShading::Uncorrelated;
     options.region = region;
+    options.texture_methods = texture_methods;
     if (talk && isatty(STDERR_FILENO)) options.progress = terminal_progress("render");
     auto image = render(*scene, *materials, options);
     if (!image) return image.error();
@@ -196,10 +245,18 @@ Status run(const RenderArgs& args)
     a.text = {{"cmfilter:kind", "render"},
               {"cmfilter:version", version()},
               {"cmfilter:scene", path_for_record(scene->path, args.output)},
-              {"cmfilter:method", to_string(image->method)},
+              {"cmfilter:method", automatic ? "auto" : to_string(image->method)},
               {"cmfilter:footprint", to_string(options.footprint)}};
+    if (automatic) {  // "0: mixture, 2: naive": each texture surface's method
+        std::string chosen;
+        for (const SurfaceMethodChoice& c : choices)
+            chosen += (chosen.empty() ? "" : ", ") + std::to_string(c.surface) + ": " +
+                      to_string(c.choice.choice()->method);
+        a.text.push_back({"cmfilter:texture_methods", chosen});
+    }
     a.numbers = {{"cmfilter:samples", static_cast<double>(image->samples)},
                  {"cmfilter:seed", static_cast<double>(args.seed)}};
+    if (automatic) a.numbers.push_back({"cmfilter:method_tolerance", *args.tolerance});
     if (auto st = write_rgb_image(args.output, image->width, image->height, 3, image->rgb, config->scene_linear_name(),
                                   a, *config, frame_placement(*image));
         !st)
@@ -224,7 +281,12 @@ Status run(const RenderArgs& args)
         nlohmann::json j;
         j["output"] = args.output;
         j["scene"] = scene->path;
-        j["method"] = to_string(image->method);
+        j["method"] = automatic ? "auto" : to_string(image->method);
+        if (automatic) {
+            j["texture_methods"] = nlohmann::json::array();
+            for (const SurfaceMethodChoice& c : choices)
+                j["texture_methods"].push_back({{"surface", c.surface}, {"choice", method_choice_json(c.choice)}});
+        }
         j["samples"] = image->samples;
         j["seed"] = args.seed;
         j["footprint"] = to_string(options.footprint);
@@ -250,14 +312,18 @@ Status run(const RenderArgs& args)
         std::cout << "wrote " << args.output << ": ";
         if (region)
             std::cout << "region " << to_string(*region) << " (" << image->width << " x " << image->height << ") of ";
-        std::cout << image->frame_width << " x " << image->frame_height << ", " << to_string(image->method) << ", "
-                  << image->samples << " ray(s) per pixel, " << hits << " pixels on a surface, " << image->seconds
-                  << " s\n";
+        std::cout << image->frame_width << " x " << image->frame_height << ", "
+                  << (automatic ? "auto" : to_string(image->method)) << ", " << image->samples << " ray(s) per pixel, "
+                  << hits << " pixels on a surface, " << image->seconds << " s\n";
         if (image->method == RenderMethod::Gaussian || image->method == RenderMethod::Mixture) {
             for (std::size_t i = 0; i < materials->size(); ++i)
                 std::cout << "  " << describe_table(i, table_layer((*materials)[i])) << "\n";
             std::cout << "  " << image->plain_footprints << " of " << image->footprints
                       << " footprints took C0(mean) directly\n";
+        }
+        for (const SurfaceMethodChoice& c : choices) {
+            std::cout << "  surface " << c.surface << ": " << to_string(c.choice.choice()->method) << "\n";
+            print_method_choice(std::cout, c.choice);
         }
     }
     return ok();
@@ -273,7 +339,7 @@ Command setup_render(CLI::App& parent)
     app->add_option("-o,--output", args->output, "Image to write (.exr scene-linear, .png/.jpg sRGB)")->required();
     app->add_option(
            "--method", args->method,
-           "naive, gaussian, gaussian-exact (microsurfaces: D_h's exact moments), mixture (texture drivers: two Gaussians of four moments; others as gaussian), exact (microsurfaces, or texture drivers with at most 256 values), supersample or reference")
+           "naive, gaussian, gaussian-exact (microsurfaces: D_h's exact moments), mixture (texture drivers: two Gaussians of four moments; others as gaussian), exact (microsurfaces, or texture drivers with at most 256 values), supersample, reference, or auto (with --tolerance: each texture's cheapest method that meets it, measured; others gaussian)")
         ->capture_default_str();
     app->add_option("--size,--resolution", args->size,
                     "Render at WxH instead of the scene's camera resolution (the same camera and vertical field "
@@ -318,13 +384,11 @@ Command setup_render(CLI::App& parent)
     app->add_option("--threads", args->threads, "Threads (0: all cores)")->capture_default_str();
     app->add_flag("--json", args->json, "Print a machine-readable summary on stdout");
     app->add_flag("-q,--quiet", args->quiet, "Print nothing on success (and no progress)");
-    FieldFlags flags = color_map_flags();
-    flags.insert(flags.end(), {{"RenderOptions::region", "--region"},
-                               {"RenderOptions::samples", "--spp"},
-                               {"RenderOptions::max_probes", "--probes"},
-                               {"TableChoiceOptions::tolerance", "--tolerance"},
-                               {"TableChoiceOptions::plain_bound", "--shortcut"}});
-    return {app, [args] { return run(*args); }, flags};
+    app->add_option("--measure-lods", args->measure_lods,
+                    "LODs --method auto measures each texture at, comma-separated (default: 1 to 8, or the top "
+                    "level)")
+        ->delimiter(',');
+    return {app, [args] { return run(*args); }, render_flags()};
 }
 
 }  // namespace cmfilter::cli

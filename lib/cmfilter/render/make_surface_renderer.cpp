@@ -33,8 +33,10 @@ Expected<std::unique_ptr<SurfaceRenderer>> make_surface_renderer(const Material&
                 return as_renderer<DriverRenderer, SurfaceRenderer>(
                     make_noise_renderer(material.color, driver, surface, options.method));
             else if constexpr (std::is_same_v<Driver, TextureDriver>)
-                return as_renderer<DriverRenderer, SurfaceRenderer>(
-                    make_texture_renderer(material, driver, surface, options.method, options));
+                return as_renderer<DriverRenderer, SurfaceRenderer>(make_texture_renderer(
+                    material, driver, surface,
+                    surface < options.texture_methods.size() ? options.texture_methods[surface] : options.method,
+                    options));
             else if constexpr (std::is_same_v<Driver, MicrosurfaceDriver>)
                 return make_microsurface_renderer(driver, surface, options);
             else {

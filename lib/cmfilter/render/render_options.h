@@ -12,6 +12,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace cmfilter {
 
@@ -60,6 +61,10 @@ struct RenderOptions {
     // thread count, since every pixel's rays are seeded by its index in the
     // whole frame. Empty: the whole frame.
     std::optional<PixelRegion> region;
+    // The one-ray method of each surface with a texture driver, by surface
+    // index (render --method auto: chosen per material); empty, or a surface
+    // past its end: `method`. Other drivers take `method`.
+    std::vector<RenderMethod> texture_methods;
     std::function<void(double)> progress;  // fraction of rows done, may be empty
 };
 

@@ -16,6 +16,7 @@
 // base layer: a material of its own (C0 over a noise or texture driver).
 #pragma once
 
+#include "cmfilter/colormap/color_map_loading.h"
 #include "cmfilter/microsurface/displacement_texture.h"
 #include "cmfilter/microsurface/gaussian_microsurface.h"
 #include "cmfilter/microsurface/microsurface_colors.h"
@@ -67,8 +68,11 @@ using MaterialDriver = std::variant<NoiseDriver, TextureDriver, MicrosurfaceDriv
 // Where a material's parts came from and what was made for it here.
 struct MaterialProvenance {
     std::string map_path, table_path;  // its colour map (C0, or C_h); empty table_path: baked here
-    std::string driver_path;           // texture: the level-0 driver image read (or recorded, when gone)
-    std::string slope_map_path;        // microsurface: C_s's image
+    // Where C0 came from, as a table file records it (a driver's colour map;
+    // empty for a microsurface's).
+    std::optional<ColorMapProvenance> map_source;
+    std::string driver_path;     // texture: the level-0 driver image read (or recorded, when gone)
+    std::string slope_map_path;  // microsurface: C_s's image
     // A moments driver whose recorded driver is gone (no level 0): the error
     // naming the surface, the driver and the moments file; empty otherwise.
     std::string missing_driver;

@@ -75,6 +75,7 @@ Status load_colormap(const LayerSource& layer, const ColorConfig& config, const 
         if (!map) return located(map.error(), prefix);
         m.map = map->map.map;
         provenance.map_path = map->map.provenance.path;
+        provenance.map_source = map->map.provenance;
         m.table = std::move(loaded->table);
         provenance.table_path = source.table_path;
         return ok();
@@ -85,6 +86,7 @@ Status load_colormap(const LayerSource& layer, const ColorConfig& config, const 
     if (!map) return located(map.error(), prefix);
     m.map = std::move(map->map);
     provenance.map_path = source.image_path;
+    provenance.map_source = map->provenance;
     const std::optional<double>& tolerance = options.tables.tolerance;
     if (tolerance ? *tolerance > 0 : source.tolerance.has_value()) return ok();  // fitted later
     GaussianColorTableOptions table_options;
@@ -463,18 +465,26 @@ bool exact_filterable(const std::vector<Material>& materials)
     return true;
 }
 
+Status prepare_surface_histograms(const Scene& scene, std::vector<Material>& materials, std::size_t i,
+                                  const MaterialOptions& options)
+{
+    if (materials.size() != scene.surfaces.size() || i >= materials.size())
+        return bad_input("histograms: " + std::to_string(materials.size()) + " materials for " +
+                         std::to_string(scene.surfaces.size()) + " surfaces (surface " + std::to_string(i) + ")");
+    auto* texture = std::get_if<TextureDriver>(&materials[i].driver);
+    if ((texture && texture->histograms) || is_microsurface(materials[i])) return ok();
+    if (auto st = refuse_noise_for_exact(scene, i); !st) return st;
+    if (!texture) return ok();  // a noise driver on a surface the scene says is a texture's: nothing to bake from
+    return load_histograms(scene, i, options, *texture, materials[i].provenance);
+}
+
 Status prepare_histograms(const Scene& scene, std::vector<Material>& materials, const MaterialOptions& options)
 {
     if (materials.size() != scene.surfaces.size())
         return bad_input("histograms: " + std::to_string(materials.size()) + " materials for " +
                          std::to_string(scene.surfaces.size()) + " surfaces");
-    for (std::size_t i = 0; i < materials.size(); ++i) {
-        auto* texture = std::get_if<TextureDriver>(&materials[i].driver);
-        if ((texture && texture->histograms) || is_microsurface(materials[i])) continue;
-        if (auto st = refuse_noise_for_exact(scene, i); !st) return st;
-        if (!texture) continue;  // a noise driver on a surface the scene says is a texture's: nothing to bake from
-        if (auto st = load_histograms(scene, i, options, *texture, materials[i].provenance); !st) return st;
-    }
+    for (std::size_t i = 0; i < materials.size(); ++i)
+        if (auto st = prepare_surface_histograms(scene, materials, i, options); !st) return st;
     return ok();
 }
 

@@ -78,6 +78,9 @@ bool exact_filterable(const std::vector<Material>& materials);
 // prepare_materials does with MaterialOptions::histograms (and with its
 // errors), for materials prepared without.
 Status prepare_histograms(const Scene& scene, std::vector<Material>& materials, const MaterialOptions& options);
+// The same for surface `surface` alone.
+Status prepare_surface_histograms(const Scene& scene, std::vector<Material>& materials, std::size_t surface,
+                                  const MaterialOptions& options);
 
 // Re-bakes, with MaterialOptions::moment_order moments, the pyramid of every
 // surface's texture driver baked in process from a driver image with

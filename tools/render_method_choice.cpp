@@ -1,0 +1,97 @@
+// SPDX-License-Identifier: Apache-2.0
+// render --method auto: each texture surface's method chosen for the
+// tolerance as `apply --tolerance` chooses it (ops/method_choice.h), on its
+// own driver and table: four moments of its driver (with the texture's
+// wrap and channel), its table (the fitted one, when fitted) and, for a
+// driver of at most kHistogramMaxValues values, its histogram pyramid are
+// written to temporary files and measured against the box reference.
+#include "command.h"
+
+#include "cmfilter/tables/gaussian_color_table_file.h"
+#include "cmfilter/texture/histogram_pyramid.h"
+#include "cmfilter/texture/moment_pyramid.h"
+#include "cmfilter/util/temporary_file.h"
+
+#include <variant>
+
+namespace cmfilter::cli {
+
+Expected<std::vector<SurfaceMethodChoice>> choose_texture_methods(const Scene& scene,
+                                                                  const std::vector<Material>& materials,
+                                                                  const ColorConfig& config,
+                                                                  const MethodChoiceOptions& options, int threads)
+{
+    std::vector<SurfaceMethodChoice> out;
+    for (std::size_t i = 0; i < materials.size(); ++i) {
+        const Material& m = materials[i];
+        const auto* texture = std::get_if<TextureDriver>(&m.driver);
+        if (!texture || is_microsurface(m)) continue;
+        const std::string surface = "surface " + std::to_string(i) + " (" + scene.path + ")";
+        if (!m.provenance.missing_driver.empty())
+            return io_error(m.provenance.missing_driver + "; --method auto measures each method against the box "
+                                                          "mean of C0 over the driver's texels");
+        if (!m.provenance.map_source)
+            return bad_input(surface + ": its colour map's source is unknown (cannot measure its methods)");
+        const MomentPyramidInfo& info = texture->texture.moments().info();
+
+        auto moments = TemporaryFile::create("cmfilter-auto-moments", ".exr");
+        if (!moments) return moments.error();
+        MomentBakeOptions bake;
+        bake.driver_path = m.provenance.driver_path;
+        bake.channel = std::to_string(info.channel_index);
+        bake.wrap = info.wrap;
+        bake.order = 4;
+        bake.output_path = moments->path();
+        bake.threads = threads;
+        if (auto baked = bake_moment_pyramid(bake); !baked) return prefixed(surface + ": ", baked.error());
+
+        auto table = TemporaryFile::create("cmfilter-auto-table", ".exr");
+        if (!table) return table.error();
+        GaussianColorTableInfo table_info;
+        table_info.source = *m.provenance.map_source;
+        if (auto st = write_gaussian_color_table(table->path(), m.color.table, table_info); !st)
+            return prefixed(surface + ": ", st.error());
+
+        // The histogram pyramid when the driver has few enough values.
+        std::optional<TemporaryFile> histograms;
+        if (texture->texture.distinct_values() <= static_cast<std::size_t>(kHistogramMaxValues)) {
+            auto file = TemporaryFile::create("cmfilter-auto-histograms", ".exr");
+            if (!file) return file.error();
+            HistogramBakeOptions h;
+            static_cast<PyramidBakeOptions&>(h) = bake;
+            h.output_path = file->path();
+            if (auto baked = bake_histogram_pyramid(h); !baked) return prefixed(surface + ": ", baked.error());
+            histograms = std::move(*file);
+        }
+
+        ApplyOptions inputs;
+        inputs.moments_path = moments->path();
+        inputs.table_path = table->path();
+        inputs.driver_path = m.provenance.driver_path;
+        if (histograms) inputs.histograms_path = histograms->path();
+        inputs.threads = threads;
+        MethodChoiceOptions o = options;
+        // A `moments` file of two moments renders as it is: no mixture.
+        if (!m.provenance.moments_baked && info.order != 4 && o.candidates.empty()) {
+            o.candidates = {FilterMethod::Naive, FilterMethod::Gaussian};
+            if (histograms) o.candidates.push_back(FilterMethod::Exact);
+        }
+        auto choice = choose_filter_method(inputs, config, o);
+        if (!choice) return prefixed(surface + ": ", choice.error());
+        if (!choice->choice()) return no_method_meets(*choice, surface);
+        out.push_back({i, std::move(*choice)});
+    }
+    return out;
+}
+
+RenderMethod render_method_of(FilterMethod method)
+{
+    switch (method) {
+    case FilterMethod::Naive: return RenderMethod::Naive;
+    case FilterMethod::Mixture: return RenderMethod::Mixture;
+    case FilterMethod::Exact: return RenderMethod::Exact;
+    default: return RenderMethod::Gaussian;
+    }
+}
+
+}  // namespace cmfilter::cli
