@@ -10,11 +10,19 @@
 #include "cmfilter/tables/gaussian_color_table_file.h"
 #include "cmfilter/texture/histogram_pyramid.h"
 #include "cmfilter/texture/moment_pyramid.h"
+#include "cmfilter/util/memory_budget.h"
 #include "cmfilter/util/temporary_file.h"
 
 #include <variant>
 
 namespace cmfilter::cli {
+
+namespace {
+
+// The largest histogram pyramid --method auto bakes to measure exact.
+constexpr double kAutoHistogramBytes = 512.0 * 1024 * 1024;
+
+}  // namespace
 
 Expected<std::vector<SurfaceMethodChoice>> choose_texture_methods(const Scene& scene,
                                                                   const std::vector<Material>& materials,
@@ -52,9 +60,18 @@ Expected<std::vector<SurfaceMethodChoice>> choose_texture_methods(const Scene& s
         if (auto st = write_gaussian_color_table(table->path(), m.color.table, table_info); !st)
             return prefixed(surface + ": ", st.error());
 
-        // The histogram pyramid when the driver has few enough values.
+        // The histogram pyramid when the driver has few enough values and it
+        // stays within kAutoHistogramBytes (4 bytes a value a texel, 4/3
+        // over the levels).
         std::optional<TemporaryFile> histograms;
-        if (texture->texture.distinct_values() <= static_cast<std::size_t>(kHistogramMaxValues)) {
+        const std::size_t values = texture->texture.distinct_values();
+        const double histogram_bytes = 4.0 * static_cast<double>(values) * texture->texture.width() *
+                                       texture->texture.height() * 4 / 3;
+        std::string too_large;
+        if (values <= static_cast<std::size_t>(kHistogramMaxValues) && histogram_bytes > kAutoHistogramBytes)
+            too_large = "exact: the histogram pyramid of " + std::to_string(values) + " values would take " +
+                        byte_size_text(histogram_bytes) + " (more than " + byte_size_text(kAutoHistogramBytes) + ")";
+        if (values <= static_cast<std::size_t>(kHistogramMaxValues) && too_large.empty()) {
             auto file = TemporaryFile::create("cmfilter-auto-histograms", ".exr");
             if (!file) return file.error();
             HistogramBakeOptions h;
@@ -78,6 +95,9 @@ Expected<std::vector<SurfaceMethodChoice>> choose_texture_methods(const Scene& s
         }
         auto choice = choose_filter_method(inputs, config, o);
         if (!choice) return prefixed(surface + ": ", choice.error());
+        if (!too_large.empty())
+            for (std::string& why : choice->skipped)
+                if (why.rfind("exact:", 0) == 0) why = too_large;
         if (!choice->choice()) return no_method_meets(*choice, surface);
         out.push_back({i, std::move(*choice)});
     }

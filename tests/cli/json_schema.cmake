@@ -37,7 +37,7 @@ cmfilter_json_case(apply-tolerance apply_inputs ${CMF} apply --moments ${OUT}/ap
                    --table ${OUT}/apply-table.exr --lod 1 --tolerance 100 --measure-lods 1 -o ${JOUT}/applied-tol.exr)
 cmfilter_json_case(render "" ${CMF} render ${SC}/good.json --method gaussian -o ${JOUT}/render.exr
                    --aov ${JOUT}/render-aov)
-cmfilter_json_case(render-auto "" ${CMF} render ${SCB}/texture-quantised.json --method auto --tolerance 100
+cmfilter_json_case(render-auto "" ${CMF} render ${SCB}/texture-auto.json --method auto --tolerance 100
                    --measure-lods 1 -o ${JOUT}/render-auto.exr)
 cmfilter_json_case(render-reference "" ${CMF} render ${SC}/good.json --method reference -o ${JOUT}/render-ref.exr)
 cmfilter_json_case(compare "" ${CMF} compare ${FIX}/cmp-a.exr ${FIX}/cmp-b.exr)

@@ -93,10 +93,10 @@ set_tests_properties(cli.render.moments-gaussian cli.render.moments-supersample 
 cmfilter_cli_case(NAME render.auto-records-choice EXIT 0
                   STDOUT "cmfilter:method: \"auto\".*cmfilter:method_tolerance: 100.*cmfilter:texture_methods: \"0: naive\""
                   COMMAND bash -c "set -o pipefail && ($0 render $1 --method auto --tolerance 100 --measure-lods 1 -o $2 -q && oiiotool --info -v $2) | tr '\\n' ' '"
-                          ${CMF} ${SCB}/texture-quantised.json ${OUT}/render-auto.exr)
+                          ${CMF} ${SCB}/texture-auto.json ${OUT}/render-auto.exr)
 cmfilter_cli_case(NAME render.bad.auto-without-tolerance EXIT 3
                   STDERR "--method auto chooses each texture's method for a tolerance: it needs --tolerance DE"
-                  ABSENT ${RO} COMMAND ${CMF} render ${SCB}/texture-quantised.json --method auto -o ${RO})
+                  ABSENT ${RO} COMMAND ${CMF} render ${SCB}/texture-auto.json --method auto -o ${RO})
 # The exact method: a driver image with four values (its histograms baked in
 # process); a noise driver and a driver with 1024 values are refused.
 cmfilter_cli_case(NAME render.texture-image-exact EXIT 0 STDOUT "32 x 18, exact, 1 ray\\(s\\) per pixel, [0-9]+ pixels"
