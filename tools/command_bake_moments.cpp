@@ -76,6 +76,8 @@ Expected<MethodChoice> choose_moment_order(const BakeMomentsArgs& args, const Mo
     auto choice = choose_filter_method(measured, *config, co);
     if (!choice) return choice.error();
     if (!choice->choice()) return no_method_meets(*choice, "'" + args.driver_path + "' through '" + args.table + "'");
+    for (std::string& why : choice->skipped)
+        why = name_flags(why, {{"ApplyOptions::histograms_path", "--histograms H.exr"}});
     return choice;
 }
 
