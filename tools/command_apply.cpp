@@ -81,6 +81,7 @@ Status run(ApplyArgs args)
         MethodChoiceOptions co;
         co.tolerance = *args.tolerance;
         co.lods = args.measure_lods;
+        if (progress) co.progress = terminal_progress("apply: measuring the methods");
         auto chosen = choose_filter_method(args.options, *config, co);
         if (!chosen) return chosen.error();
         if (!chosen->choice())

@@ -51,7 +51,7 @@ struct BakeMomentsArgs {
 // The cheapest method for --tolerance, measured on order-4 moments baked to a
 // temporary file (and the histograms just written, when asked for).
 Expected<MethodChoice> choose_moment_order(const BakeMomentsArgs& args, const MomentBakeOptions& options,
-                                           bool histograms)
+                                           bool histograms, bool progress)
 {
     auto config = load_color_config(args.ocio_config);
     if (!config) return config.error();
@@ -73,6 +73,7 @@ Expected<MethodChoice> choose_moment_order(const BakeMomentsArgs& args, const Mo
     MethodChoiceOptions co;
     co.tolerance = *args.tolerance;
     co.lods = args.measure_lods;
+    if (progress) co.progress = terminal_progress("bake-moments: measuring the methods");
     auto choice = choose_filter_method(measured, *config, co);
     if (!choice) return choice.error();
     if (!choice->choice()) return no_method_meets(*choice, "'" + args.driver_path + "' through '" + args.table + "'");
@@ -136,7 +137,7 @@ Status run(const BakeMomentsArgs& args, const CLI::App& app)
     // cheapest that meets it needs written (order 4 for mixture, else 2).
     std::optional<MethodChoice> choice;
     if (args.tolerance) {
-        auto chosen = choose_moment_order(args, options, histograms.has_value());
+        auto chosen = choose_moment_order(args, options, histograms.has_value(), progress);
         if (!chosen) {
             if (histograms) std::remove(args.histograms.c_str());
             return chosen.error();

@@ -172,6 +172,7 @@ Expected<MethodChoice> choose_filter_method(const ApplyOptions& base, const Colo
                 t.worst_lod = out.lods[i];
             }
         }
+        if (options.progress) options.progress(static_cast<double>(i + 1) / static_cast<double>(out.lods.size()));
     }
     for (std::size_t i = 0; i < out.trials.size(); ++i) {
         MethodTrial& t = out.trials[i];

@@ -22,6 +22,7 @@
 #include "cmfilter/util/error.h"
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -38,6 +39,8 @@ struct MethodChoiceOptions {
     // gaussian, mixture when the moments are of order 4, exact when
     // ApplyOptions::histograms_path is set). Reference is not a candidate.
     std::vector<FilterMethod> candidates;
+    // Optional: the fraction of the LODs measured, from the calling thread.
+    std::function<void(double fraction)> progress;
 };
 
 // One candidate, measured.
