@@ -177,6 +177,9 @@ void print_json(const std::string& command, nlohmann::json summary);
 // "errors", "worst", "worst_lod", "meets", "time_ms"}], "skipped"}; and as
 // a table of lines for the text report.
 nlohmann::json method_choice_json(const MethodChoice& choice);
+// --measure-lods L,L,...: the LODs a --tolerance choice measures
+// (MethodChoiceOptions::lods).
+void add_measure_lods_option(CLI::App& app, std::vector<double>& lods);
 void print_method_choice(std::ostream& out, const MethodChoice& choice);
 
 // render --method auto (render_method_choice.cpp): each texture surface's

@@ -180,9 +180,7 @@ Command setup_apply(CLI::App& parent)
                     "Choose the cheapest method whose mean CIEDE2000 against the box reference is at most DE at "
                     "every measured LOD (naive, gaussian, mixture with order-4 moments, exact with --histograms)")
         ->excludes(method);
-    app->add_option("--measure-lods", args->measure_lods,
-                    "LODs --tolerance measures, comma-separated (default: 1 to 8, or the top level)")
-        ->delimiter(',');
+    add_measure_lods_option(*app, args->measure_lods);
     app->add_option("--size", args->size, "Output size WxH (default: the size of level floor(lod))");
     app->add_option("--map", args->options.map_path,
                     "Colour map image (default: the table's cmfilter:source, hash-checked)");

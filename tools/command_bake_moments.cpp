@@ -234,9 +234,7 @@ Command setup_bake_moments(CLI::App& parent)
         ->excludes(order);
     app->add_option("--table", args->table, "Gaussian colour table --tolerance measures through (bake-colormap)");
     app->add_option("--map", args->map, "Colour map image for --tolerance (default: the table's cmfilter:source)");
-    app->add_option("--measure-lods", args->measure_lods,
-                    "LODs --tolerance measures, comma-separated (default: 1 to 8, or the top level)")
-        ->delimiter(',');
+    add_measure_lods_option(*app, args->measure_lods);
     app->add_option("--ocio-config,--colorconfig", args->ocio_config,
                     "OpenColorIO config for --tolerance's colour map (default: $OCIO if set, else built-in)");
     add_exr_output_options(*app, args->storage, "64 64");

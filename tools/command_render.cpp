@@ -384,10 +384,7 @@ Command setup_render(CLI::App& parent)
     app->add_option("--threads", args->threads, "Threads (0: all cores)")->capture_default_str();
     app->add_flag("--json", args->json, "Print a machine-readable summary on stdout");
     app->add_flag("-q,--quiet", args->quiet, "Print nothing on success (and no progress)");
-    app->add_option("--measure-lods", args->measure_lods,
-                    "LODs --method auto measures each texture at, comma-separated (default: 1 to 8, or the top "
-                    "level)")
-        ->delimiter(',');
+    add_measure_lods_option(*app, args->measure_lods);
     return {app, [args] { return run(*args); }, render_flags()};
 }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// How --tolerance's method choice (ops/method_choice.h) is reported: in
-// --json and as a table in the text report.
+// --tolerance's method choice (ops/method_choice.h) on the command line: the
+// LODs it measures, and how it is reported (--json, and a table in the text
+// report).
 #include "command.h"
 
 #include <nlohmann/json.hpp>
@@ -30,6 +31,14 @@ nlohmann::json method_choice_json(const MethodChoice& choice)
             {"reference_ms", choice.reference_ms},
             {"trials", std::move(trials)},
             {"skipped", choice.skipped}};
+}
+
+void add_measure_lods_option(CLI::App& app, std::vector<double>& lods)
+{
+    app.add_option("--measure-lods", lods,
+                   "LODs --tolerance measures each method at, comma-separated (default: every integer LOD from 1 "
+                   "to 8 the pyramid reaches)")
+        ->delimiter(',');
 }
 
 void print_method_choice(std::ostream& out, const MethodChoice& choice)
