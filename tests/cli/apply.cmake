@@ -60,6 +60,13 @@ cmfilter_apply_case(NAME bad.mixture-two-moments EXIT 3
 cmfilter_apply_case(NAME bad.tolerance-none-meets EXIT 3
                     STDERR "'.*apply-moments\\.exr' through '.*apply-table\\.exr': no method meets --tolerance 1e-09 \\(mean CIEDE2000 at LOD 1, 2, 3, 4, 5\\); the closest is [a-z]+ at [0-9.e-]+ \\(LOD [1-5]\\); not tried: mixture: '.*apply-moments\\.exr' holds 2 moments \\(mixture needs bake-moments --order 4\\); not tried: exact: no histogram pyramid \\(--histograms H\\.exr\\)"
                     ABSENT ${A} COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod 1 --tolerance 1e-9 -o ${A})
+cmfilter_apply_case(NAME bad.tolerance-zero EXIT 3
+                    STDERR "--tolerance 0 is invalid \\(expected a CIEDE2000 difference > 0\\)"
+                    ABSENT ${A} COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod 1 --tolerance 0 -o ${A})
+cmfilter_apply_case(NAME bad.measure-lods-negative EXIT 3
+                    STDERR "--measure-lods holds -1 \\(expected finite levels of detail >= 0\\)"
+                    ABSENT ${A} COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod 1 --tolerance 1
+                                        --measure-lods 1,-1 -o ${A})
 cmfilter_apply_case(NAME usage.tolerance-with-method EXIT 1 STDERR "--method excludes --tolerance"
                     ABSENT ${A} COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod 1 --tolerance 1
                                         --method gaussian -o ${A})
