@@ -38,6 +38,16 @@ struct MomentMixtureOptions {
     double min_variance = 0;
 };
 
+// The options for a float32 pyramid of a driver with values in [lo, hi]:
+// a footprint narrower than a millionth of the range squared is one Gaussian
+// (its third and fourth moments are rounding there).
+inline MomentMixtureOptions pyramid_mixture_options(double lo, double hi)
+{
+    MomentMixtureOptions o;
+    o.min_variance = 1e-6 * (hi - lo) * (hi - lo);
+    return o;
+}
+
 // From the mean, the variance sigma^2 >= 0, and the third and fourth central
 // moments mu3 and mu4 of a footprint. Moments outside what any distribution
 // can have (mu4 < mu3^2 / sigma^2 + sigma^4, from rounding) give the

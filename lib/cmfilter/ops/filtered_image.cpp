@@ -208,12 +208,7 @@ Expected<FilteredImage> apply_filter(const ApplyOptions& options, const ColorCon
         histograms = std::move(*h);
     }
 
-    // The mixture takes a footprint narrower than a millionth of the driver's
-    // range squared as one Gaussian: its third and fourth float32 moments are
-    // rounding there.
-    const double range = info.driver_max - info.driver_min;
-    MomentMixtureOptions mixture_options;
-    mixture_options.min_variance = 1e-6 * range * range;
+    const MomentMixtureOptions mixture_options = pyramid_mixture_options(info.driver_min, info.driver_max);
 
     // Every output pixel, rows in parallel; progress between batches of rows.
     const int W = out.width, H = out.height;

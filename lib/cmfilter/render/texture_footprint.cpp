@@ -43,14 +43,8 @@ TextureFootprint filter_texture_footprint(const ColorLayer& color, const Filtere
     out.probes = probes.count;
     out.lod = texture.lod(probes.width);
     const double lookup_lod = trilinear_lod_for_box(out.lod);  // as FilteredTexture::filter's
-    // As apply's mixture: a footprint narrower than a millionth of the
-    // driver's range squared is one Gaussian (its m3, m4 are float32 rounding).
-    MomentMixtureOptions mixture;
-    if (colour == TextureColor::Mixture) {
-        const MomentPyramidInfo& info = texture.moments().info();
-        const double range = info.driver_max - info.driver_min;
-        mixture.min_variance = 1e-6 * range * range;
-    }
+    const MomentPyramidInfo& info = texture.moments().info();
+    const MomentMixtureOptions mixture = pyramid_mixture_options(info.driver_min, info.driver_max);
     for (int j = 0; j < probes.count; ++j) {
         const double o = (j + 0.5) / probes.count - 0.5;
         const double u = h.u + o * probes.step_u, v = h.v + o * probes.step_v;
