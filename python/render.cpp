@@ -30,7 +30,7 @@ void bind_render(py::module_& m)
         "render",
         [](const std::string& scene_path, const std::string& method, std::optional<std::pair<int, int>> size,
            std::optional<std::tuple<int, int, int, int>> region, int samples, std::uint64_t seed, int probes,
-           const std::string& footprint, bool edge_coverage, std::optional<double> tolerance,
+           int sub_footprints, const std::string& footprint, bool edge_coverage, std::optional<double> tolerance,
            std::optional<double> shortcut, const std::string& masking, const std::string& slope_shading, bool aovs,
            const std::string& ocio_config, int threads) -> py::object {
             RenderOptions options;
@@ -43,6 +43,8 @@ void bind_render(py::module_& m)
             options.samples = samples;
             options.seed = seed;
             options.max_probes = probes;
+            options.sub_footprints.max_cells = sub_footprints;
+            check(check_sub_footprint_options(options.sub_footprints));
             options.edge_coverage = edge_coverage;
             options.masking = parse_masking(masking, "masking");
             options.slope_shading = slope_shading == "correlated" ? SlopeShading::Correlated
@@ -92,11 +94,12 @@ void bind_render(py::module_& m)
         },
         py::arg("scene"), py::kw_only(), py::arg("method") = "gaussian", py::arg("size") = py::none(),
         py::arg("region") = py::none(), py::arg("samples") = 16, py::arg("seed") = 0, py::arg("probes") = 16,
-        py::arg("footprint") = "rms", py::arg("edge_coverage") = true, py::arg("tolerance") = py::none(),
-        py::arg("shortcut") = py::none(), py::arg("masking") = "correlated", py::arg("slope_shading") = "correlated",
-        py::arg("aovs") = false, py::arg("ocio_config") = "", py::arg("threads") = 0,
-        "Renders a scene file (docs/scene-format.md) by naive, gaussian, gaussian-exact, exact, supersample or "
-        "reference, as `cmfilter render`: (H, W, 3) float32 scene-linear, or with aovs=True a dict of it (rgb) "
+        py::arg("sub_footprints") = SubFootprintOptions{}.max_cells, py::arg("footprint") = "rms",
+        py::arg("edge_coverage") = true, py::arg("tolerance") = py::none(), py::arg("shortcut") = py::none(),
+        py::arg("masking") = "correlated", py::arg("slope_shading") = "correlated", py::arg("aovs") = false,
+        py::arg("ocio_config") = "", py::arg("threads") = 0,
+        "Renders a scene file (docs/scene-format.md) by naive, gaussian, gaussian-exact, mixture, exact, supersample "
+        "or reference, as `cmfilter render` (sub_footprints: mixture's most squares per axis for noise drivers): (H, W, 3) float32 scene-linear, or with aovs=True a dict of it (rgb) "
         "and the per-pixel hit, distance, mean, sigma and lod.");
 }
 

@@ -39,6 +39,7 @@ struct BenchArgs {
     int max_reference_samples = 16 * kReferenceSamples;
     int repeats = 3;
     int probes = 16;
+    int sub_footprints = SubFootprintOptions{}.max_cells;
     std::vector<std::string> only;
     bool no_edge_coverage = false;
     std::uint64_t seed = 0;
@@ -118,6 +119,8 @@ Status run(const BenchArgs& args)
     options.repeats = args.repeats;
     options.max_probes = args.probes;
     if (auto st = check_render_probes(args.probes); !st) return st;
+    options.sub_footprints.max_cells = args.sub_footprints;
+    if (auto st = check_sub_footprint_options(options.sub_footprints); !st) return st;
     if (!args.only.empty()) {
         auto chosen = select_bench_configurations(options.configurations, args.only);
         if (!chosen) return chosen.error();
@@ -198,6 +201,9 @@ Command setup_bench(CLI::App& parent)
         ->capture_default_str();
     app->add_option("--probes", args->probes, "Probes along an anisotropic footprint (naive, gaussian, exact)")
         ->capture_default_str();
+    app->add_option("--sub-footprints", args->sub_footprints,
+                    "mixture, noise drivers: up to N x N squares per footprint in the transition (1 to 16)")
+        ->capture_default_str();
     app->add_option("--only", args->only,
                     "Run only these configurations, by the CSV's labels, comma-separated "
                     "(e.g. \"naive,gaussian 256x256 sqrt\"; default: all)")
@@ -214,7 +220,8 @@ Command setup_bench(CLI::App& parent)
                                {"BenchOptions::reference_repeat", "--reference-repeat"},
                                {"BenchOptions::max_reference_samples", "--max-reference-spp"},
                                {"BenchOptions::region", "--region"},
-                               {"RenderOptions::max_probes", "--probes"}});
+                               {"RenderOptions::max_probes", "--probes"},
+                               {"SubFootprintOptions::max_cells", "--sub-footprints"}});
     return {app, [args] { return run(*args); }, flags};
 }
 

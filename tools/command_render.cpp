@@ -37,6 +37,7 @@ struct RenderArgs {
     std::string method = "gaussian";
     int samples = 16;
     int probes = 16;
+    int sub_footprints = SubFootprintOptions{}.max_cells;
     bool no_edge_coverage = false;
     std::string masking = "correlated";
     std::string slope_shading = "correlated";
@@ -119,6 +120,7 @@ FieldFlags render_flags()
     flags.insert(flags.end(), {{"RenderOptions::region", "--region"},
                                {"RenderOptions::samples", "--spp"},
                                {"RenderOptions::max_probes", "--probes"},
+                               {"SubFootprintOptions::max_cells", "--sub-footprints"},
                                {"TableChoiceOptions::tolerance", "--tolerance"},
                                {"TableChoiceOptions::plain_bound", "--shortcut"},
                                {"MethodChoiceOptions::tolerance", "--tolerance"},
@@ -231,6 +233,7 @@ Status run(const RenderArgs& args)
     options.footprint = *footprint;
     if (auto st = check_render_probes(args.probes); !st) return st;
     options.max_probes = args.probes;
+    options.sub_footprints.max_cells = args.sub_footprints;
     options.edge_coverage = !args.no_edge_coverage;
     options.masking = args.masking == "correlated" ? MaskingShadowing::DirectionCorrelated
                                                    : MaskingShadowing::Uncorrelated;
@@ -257,6 +260,8 @@ Status run(const RenderArgs& args)
     a.numbers = {{"cmfilter:samples", static_cast<double>(image->samples)},
                  {"cmfilter:seed", static_cast<double>(args.seed)}};
     if (automatic) a.numbers.push_back({"cmfilter:method_tolerance", *args.tolerance});
+    if (*method == RenderMethod::Mixture && !automatic)
+        a.numbers.push_back({"cmfilter:sub_footprints", static_cast<double>(options.sub_footprints.max_cells)});
     if (auto st = write_rgb_image(args.output, image->width, image->height, 3, image->rgb, config->scene_linear_name(),
                                   a, *config, frame_placement(*image));
         !st)
@@ -294,6 +299,7 @@ Status run(const RenderArgs& args)
         j["slope_shading"] = args.slope_shading;
         j["edge_coverage"] = options.edge_coverage && *method != RenderMethod::Supersample &&
                              *method != RenderMethod::Reference;
+        if (*method == RenderMethod::Mixture && !automatic) j["sub_footprints"] = options.sub_footprints.max_cells;
         j["size"] = {image->frame_width, image->frame_height};
         // The pixels computed and written (the whole frame without --region).
         j["region"] = {image->x0, image->y0, image->x0 + image->width, image->y0 + image->height};
@@ -339,7 +345,7 @@ Command setup_render(CLI::App& parent)
     app->add_option("-o,--output", args->output, "Image to write (.exr scene-linear, .png/.jpg sRGB)")->required();
     app->add_option(
            "--method", args->method,
-           "naive, gaussian, gaussian-exact (microsurfaces: D_h's exact moments), mixture (texture drivers: two Gaussians of four moments; others as gaussian), exact (microsurfaces, or texture drivers with at most 256 values), supersample, reference, or auto (with --tolerance: each texture's cheapest method that meets it, measured; others gaussian)")
+           "naive, gaussian, gaussian-exact (microsurfaces: D_h's exact moments), mixture (texture drivers: two Gaussians of four moments; noise drivers: a Gaussian per square of a footprint cut into up to --sub-footprints squares per axis in the transition; others as gaussian), exact (microsurfaces, or texture drivers with at most 256 values), supersample, reference, or auto (with --tolerance: each texture's cheapest method that meets it, measured; others gaussian)")
         ->capture_default_str();
     app->add_option("--size,--resolution", args->size,
                     "Render at WxH instead of the scene's camera resolution (the same camera and vertical field "
@@ -355,6 +361,10 @@ Command setup_render(CLI::App& parent)
         ->capture_default_str();
     app->add_option("--probes", args->probes,
                     "Filter an anisotropic footprint as up to N probes along its major edge (naive, gaussian, exact)")
+        ->capture_default_str();
+    app->add_option("--sub-footprints", args->sub_footprints,
+                    "mixture, noise drivers: cut a footprint (or probe) in the transition into up to N x N squares, "
+                    "one Gaussian each (1 to 16; 1: as gaussian)")
         ->capture_default_str();
     app->add_option("--masking", args->masking,
                     "Microsurfaces: masking and shadowing correlated by the view's and the light's azimuths "

@@ -14,10 +14,15 @@
 //                  without the errors of the filtered mean and of the sigma table;
 //   mean-oracle-2048  T(m, sigma): the footprint's own mean with the table's
 //                  sigma: what exact footprint means would leave;
+//   mixture        the mixture of Gaussians over sub-footprints
+//                  (noise_sub_footprints.h, default options: up to 8 x 8)
+//                  with the 256-value table; mixture-2048 the same with the
+//                  2048-value table; mixture-4 up to 4 x 4;
 //   reference      the average of C0(f(x)) over 32 x 32 jittered-stratified
 //                  samples inside the square footprint of width w.
 // Footprints: squares of width w = p_0 2^L, L from log2(p_{N-1} / 16 / p_0)
-// (1/16 of the finest octave's period) to 2 (4 base periods) in steps of 0.5,
+// (1/16 of the finest octave's period) to LAST_LOD (2 by default: 4 base
+// periods; the sigma table is baked to it) in steps of 0.5,
 // P centres uniform over [0, 256 p_0)^2. Each map is laid over
 // [mean - 2.78 sigma, mean + 2.78 sigma] of the noise's global statistics
 // (clamp), so the noise's standard deviation is 0.18 of the map's domain, as
@@ -27,7 +32,7 @@
 //   noise,map,lod,width,method,mean,p95,max
 //
 // (LABEL names the noise in the CSV, whose specs contain commas.)
-//   cmfilter-noise-accuracy LUTS_DIR LABEL NOISE_SPEC [P] [THREADS]
+//   cmfilter-noise-accuracy LUTS_DIR LABEL NOISE_SPEC [P] [THREADS] [LAST_LOD]
 #include "cmfilter/color/ciede2000.h"
 #include "cmfilter/colormap/color_map_loading.h"
 #include "cmfilter/color/error_summary.h"
@@ -36,10 +41,12 @@
 #include "cmfilter/noise/noise_lattice.h"
 #include "cmfilter/noise/noise_sigma_bake.h"
 #include "cmfilter/noise/noise_spec.h"
+#include "cmfilter/noise/noise_sub_footprints.h"
 
 #include "bench_noise.h"
 #include "cmfilter/util/parallel_for.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -62,20 +69,22 @@ struct Map {
     GaussianColorTable table, table2048;
 };
 
-const char* const kMethods[] = {"gaussian", "gaussian-2048", "naive", "oracle-2048", "mean-oracle-2048"};
-constexpr int kMethodCount = 5;
+const char* const kMethods[] = {"gaussian",         "gaussian-2048", "naive",        "oracle-2048",
+                                "mean-oracle-2048", "mixture",       "mixture-2048", "mixture-4"};
+constexpr int kMethodCount = 8;
 
 }  // namespace
 
 int main(int argc, char** argv)
 {
-    if (argc < 4 || argc > 6) {
-        std::cerr << "usage: cmfilter-noise-accuracy LUTS_DIR LABEL NOISE_SPEC [P] [THREADS]\n";
+    if (argc < 4 || argc > 7) {
+        std::cerr << "usage: cmfilter-noise-accuracy LUTS_DIR LABEL NOISE_SPEC [P] [THREADS] [LAST_LOD]\n";
         return 1;
     }
     const std::string luts = argv[1], label = argv[2], spec_text = argv[3];
     const int points = argc > 4 ? std::atoi(argv[4]) : 2048;
     const int threads = argc > 5 ? std::atoi(argv[5]) : 0;
+    const double last_lod = argc > 6 ? std::atof(argv[6]) : 2.0;
     const auto t0 = std::chrono::steady_clock::now();
     const auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
 
@@ -83,6 +92,7 @@ int main(int argc, char** argv)
     if (!noise) return 1;
     NoiseSigmaBakeOptions bake_options;
     bake_options.threads = threads;
+    bake_options.lod_last = std::max(bake_options.lod_last, last_lod);
     auto bake = bake_noise_sigma(*noise, bake_options);
     if (!bake) {
         std::cerr << bake.error().message << "\n";
@@ -129,9 +139,11 @@ int main(int argc, char** argv)
     const int octaves = noise->options().octaves;
     const double p0 = noise->base_period();
     const double lod_first = std::log2(noise->octave_period(octaves - 1) / 16.0 / p0);
-    const int lods = static_cast<int>(std::floor((2.0 - lod_first) / kLodStep + 1e-9)) + 1;
+    const int lods = static_cast<int>(std::floor((last_lod - lod_first) / kLodStep + 1e-9)) + 1;
     const std::size_t map_count = maps.size();
 
+    SubFootprintOptions four;
+    four.max_cells = 4;
     std::cout << "noise,map,lod,width,method,mean,p95,max\n";
     for (int k = 0; k < lods; ++k) {
         const double lod = lod_first + k * kLodStep, w = p0 * std::exp2(lod);
@@ -156,14 +168,25 @@ int main(int argc, char** argv)
             const double sample_mean = sum / static_cast<double>(f.size());
             for (double v : f) sum2 += (v - sample_mean) * (v - sample_mean);
             const double sample_sigma = std::sqrt(sum2 / static_cast<double>(f.size()));
+            const FilteredNoise::Parameters whole = filtered.filter(cx, cy, w);
             for (std::size_t m = 0; m < map_count; ++m) {
+                const auto mixture = [&](const GaussianColorTable& table, const SubFootprintOptions& options) {
+                    return sub_footprint_color<Rgb>(filtered, cx, cy, w, whole, options,
+                                                    [&](const FilteredNoise::Parameters& p) {
+                        return table.lookup(p.mean, p.sigma);
+                    });
+                };
                 Rgb reference;
                 for (double v : f) reference += maps[m].map.evaluate(v);
                 reference = (1.0 / static_cast<double>(f.size())) * reference;
                 const Rgb estimates[kMethodCount] = {maps[m].table.lookup(mean, sigma),
-                                                     maps[m].table2048.lookup(mean, sigma), maps[m].map.evaluate(mean),
+                                                     maps[m].table2048.lookup(mean, sigma),
+                                                     maps[m].map.evaluate(mean),
                                                      maps[m].table2048.lookup(sample_mean, sample_sigma),
-                                                     maps[m].table2048.lookup(sample_mean, sigma)};
+                                                     maps[m].table2048.lookup(sample_mean, sigma),
+                                                     mixture(maps[m].table, {}),
+                                                     mixture(maps[m].table2048, {}),
+                                                     mixture(maps[m].table, four)};
                 for (int e = 0; e < kMethodCount; ++e)
                     errors[(m * kMethodCount + e) * points + j] = ciede2000_linear_rgb(reference, estimates[e]);
             }

@@ -7,7 +7,9 @@
 # Charts: gaussian with the 2048-value table solid (the default 256-value
 # table dotted: its value axis dominates at small sigma), naive dashed.
 # Writes WORK/noise-accuracy.csv (noise,map,lod,width,method,mean,p95,max),
-# copies it to docs/data/, and draws docs/images/noise-accuracy-{fbm,turbulence}.png.
+# copies it to docs/data/, and draws docs/images/noise-accuracy-{fbm,turbulence}.png
+# and docs/images/noise-accuracy-mixture.png (the worst map's mean error per
+# LOD for each method: one Gaussian, sub-footprints, the oracle).
 #
 #   bash tests/bench/noise_accuracy.sh BUILD_DIR WORK_DIR [P]
 set -euo pipefail
@@ -53,5 +55,39 @@ set label "target: 1.0" at -9,1.3
 plot ${plots%, }
 GNUPLOT
 done
+# The worst map per LOD and method, both noises side by side.
+python3 - "$csv" "$work" <<'EOF'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+worst = {}
+for r in rows:
+    key = (r["noise"], r["method"], float(r["lod"]))
+    worst[key] = max(worst.get(key, 0.0), float(r["mean"]))
+for (noise, method, lod), value in sorted(worst.items()):
+    with open(f"{sys.argv[2]}/worst-{noise}-{method}.dat", "a") as f:
+        f.write(f"{lod} {value}\n")
+EOF
+series=("gaussian-2048:7:blue:gaussian (2048 values)" "oracle-2048:4:gray:oracle: own mean and sd, one Gaussian"
+        "mixture-4:9:orange:mixture, up to 4 x 4" "mixture:5:brown:mixture, up to 8 x 8 (256 values)"
+        "mixture-2048:5:red:mixture, up to 8 x 8 (2048 values)")
+{
+  echo 'set terminal pngcairo size 1200,520 font "sans,11"'
+  echo "set output \"$root/docs/images/noise-accuracy-mixture.png\""
+  echo 'set multiplot layout 1,2 title "Worst bundled map per LOD: one Gaussian against sub-footprints (mean CIEDE2000 vs 32x32 supersampling)"'
+  echo 'set logscale y; set yrange [0.1:40]; set xrange [-9.2:2.2]; set grid; set key top left font ",9"'
+  echo 'set xlabel "LOD = log2(footprint width / base period)"; set ylabel "worst map mean CIEDE2000"'
+  echo 'set arrow 1 from -9.2,1 to 2.2,1 nohead dt 4 lw 2 lc rgb "black"'
+  for noise in fbm turbulence; do
+    echo "set title \"$noise (gradient, 6 octaves)\""
+    plots=""
+    for s in "${series[@]}"; do
+      IFS=: read -r m pt colour title <<< "$s"
+      plots+="'$work/worst-$noise-$m.dat' with linespoints lw 2 pt $pt lc rgb '$colour' title '$title', "
+    done
+    echo "plot ${plots%, }"
+  done
+  echo 'unset multiplot'
+} > "$work/mixture.gp"
+gnuplot "$work/mixture.gp"
 rm -f "$work"/*.dat
 echo "noise_accuracy: wrote $csv" >&2

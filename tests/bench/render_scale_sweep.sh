@@ -5,7 +5,8 @@
 # finer (the texture mapping's scale times 1, 2, 4, ... 128 for the plane,
 # 1/128, 1/64, ... 1 for the sphere, whose bundled noise is already far
 # below its pixels), naive, gaussian
-# (256 x 256 sqrt table) and supersample 16 each against a reference grown
+# (256 x 256 sqrt table), mixture (noise: the same table over up to 8 x 8
+# sub-footprints in the transition) and supersample 16 each against a reference grown
 # until repeatable (cmfilter bench). Writes WORK_DIR/scale-sweep.csv
 # (scene, scale, then bench's columns) and WORK_DIR/scale-sweep.png (mean
 # CIEDE2000 against the scale, gnuplot), and prints the table of the docs.
@@ -20,7 +21,7 @@ sphere_size=${5:-480x480}
 root=$(cd "$(dirname "$0")/../.." && pwd)
 scenes="$root/examples/scenes"
 cmfilter="$build/tools/cmfilter"
-configurations="naive,gaussian 256x256 sqrt,supersample 16"
+configurations="naive,gaussian 256x256 sqrt,mixture,supersample 16"
 plane_scales="1 2 4 8 16 32 64 128"
 sphere_scales="0.0078125 0.015625 0.03125 0.0625 0.125 0.25 0.5 1"
 
@@ -80,17 +81,19 @@ python3 - "$out" "$work" <<'EOF'
 import csv, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
 work = sys.argv[2]
-print("| scene | scale | reference rays (repeat) | naive | gaussian (near / middle / horizon) | supersample 16 | naive / gaussian |")
-print("|---|---:|---|---:|---|---:|---:|")
+print("| scene | scale | reference rays (repeat) | naive | gaussian (near / middle / horizon) | mixture (near / middle / horizon) | supersample 16 | naive / gaussian | mixture time / gaussian time |")
+print("|---|---:|---|---:|---|---|---:|---:|---:|")
 series = {}
 for base in dict.fromkeys(r["base"] for r in rows):
     for scale in dict.fromkeys(r["scale"] for r in rows if r["base"] == base):
         by = {r["configuration"]: r for r in rows if r["base"] == base and r["scale"] == scale}
-        rep, nv, ga, ss = by["reference-repeat"], by["naive"], by["gaussian 256x256 sqrt"], by["supersample 16"]
+        rep, nv, ga, mx, ss = (by["reference-repeat"], by["naive"], by["gaussian 256x256 sqrt"], by["mixture"],
+                               by["supersample 16"])
         f = lambda r, k="mean": float(r[k])
-        print(f"| {base} | {scale} | {rep['spp']} ({f(rep):.2f}) | {f(nv):.2f} | {f(ga):.2f} ({f(ga,'near_mean'):.2f} / "
-              f"{f(ga,'middle_mean'):.2f} / {f(ga,'horizon_mean'):.2f}) | {f(ss):.2f} | {f(nv) / f(ga):.1f} |")
-        for name, r in (("naive", nv), ("gaussian", ga), ("supersample 16", ss)):
+        bands = lambda r: f"{f(r):.2f} ({f(r,'near_mean'):.2f} / {f(r,'middle_mean'):.2f} / {f(r,'horizon_mean'):.2f})"
+        print(f"| {base} | {scale} | {rep['spp']} ({f(rep):.2f}) | {f(nv):.2f} | {bands(ga)} | {bands(mx)} | {f(ss):.2f} | "
+              f"{f(nv) / f(ga):.1f} | {f(mx, 'seconds') / f(ga, 'seconds'):.1f} |")
+        for name, r in (("naive", nv), ("gaussian", ga), ("mixture", mx), ("supersample 16", ss)):
             series.setdefault((base, name), []).append((float(scale), f(r)))
 with open(f"{work}/scale-sweep.dat", "w") as d:
     for (base, name), points in series.items():
@@ -107,7 +110,7 @@ with open(f"{work}/scale-sweep.gp", "w") as g:
             'set xlabel "mapping scale, x the bundled scene\'s (finer noise to the right)"\n'
             'set ylabel "mean CIEDE2000"\n'
             'set arrow 1 from graph 0, first 1 to graph 1, first 1 nohead dt 2 lc rgb "black"\n')
-    styles = {"naive": 'pt 9 lc rgb "red"', "gaussian": 'pt 7 lc rgb "blue"', "supersample 16": 'pt 13 lc rgb "dark-green"'}
+    styles = {"naive": 'pt 9 lc rgb "red"', "gaussian": 'pt 7 lc rgb "blue"', "mixture": 'pt 5 lc rgb "brown"', "supersample 16": 'pt 13 lc rgb "dark-green"'}
     names = list(dict.fromkeys(base for base, _ in series))
     for base in names:
         g.write(f'set title "{base}"\n')

@@ -261,3 +261,15 @@ cmfilter_cli_case(NAME render.bad.region-aov EXIT 3 STDERR "--region 0,0,8,19 li
 # A region's summary: the region and its size within the frame.
 cmfilter_cli_case(NAME render.region EXIT 0 STDOUT "region 3,2,19,11 \\(16 x 9\\) of 32 x 18, gaussian, 1 ray"
                   COMMAND ${CMF} render ${SC}/good.json --region 3,2,19,11 -o ${OUT}/render-region.exr)
+# mixture on a noise driver: the footprints in the transition cut into
+# squares (noise_sub_footprints.h); the most per axis is recorded, and with
+# one square it is gaussian pixel for pixel (idiff: no difference at all).
+cmfilter_cli_case(NAME render.mixture-noise-records EXIT 0
+                  STDOUT "\"sub_footprints\": 4.*cmfilter:method: \"mixture\".*cmfilter:sub_footprints: 4"
+                  COMMAND bash -c "set -o pipefail && ($0 render $1 --method mixture --sub-footprints 4 --json -o $2 && oiiotool --info -v $2) | tr '\\n' ' '"
+                          ${CMF} ${SC}/good.json ${OUT}/render-mixture-noise.exr)
+cmfilter_cli_case(NAME render.mixture-one-square-is-gaussian EXIT 0
+                  COMMAND bash -c "$0 render $1 --method mixture --sub-footprints 1 -o $2/render-mixture-1.exr -q && $0 render $1 --method gaussian -o $2/render-mixture-g.exr -q && idiff -fail 0 -failpercent 0 -warn 0 $2/render-mixture-1.exr $2/render-mixture-g.exr"
+                          ${CMF} ${SC}/good.json ${OUT})
+cmfilter_cli_case(NAME render.bad.sub-footprints EXIT 3 STDERR "--sub-footprints 0 is out of range \\(expected 1 to 16\\)"
+                  ABSENT ${RO} COMMAND ${CMF} render ${SC}/good.json --method mixture --sub-footprints 0 -o ${RO})

@@ -47,3 +47,23 @@ def test_render_errors(source_dir, tmp_path):
     with pytest.raises(cmfilter.Error, match=r"RenderOptions::max_probes 65 is out of range") as e:
         cmfilter.render(str(source_dir / "tests/cli/scenes/good.json"), probes=65)
     assert e.value.field == "RenderOptions::max_probes"
+
+
+def test_render_mixture_sub_footprints(cli, source_dir, tmp_path):
+    # The command's mixture with 4 x 4 squares, pixel for pixel; with one
+    # square, gaussian's image; and a bad count named by its field.
+    oiiotool = shutil.which("oiiotool")
+    if not oiiotool:
+        pytest.skip("oiiotool is not installed")
+    scene = source_dir / "tests/cli/scenes/good.json"
+    exr, tif = tmp_path / "mixture.exr", tmp_path / "mixture.tif"
+    run(cli, "render", scene, "--method", "mixture", "--sub-footprints", "4", "--size", "16x9", "-o", exr, "--quiet")
+    run(oiiotool, exr, "-d", "float", "--compression", "none", "-o", tif)
+    mixture = cmfilter.render(str(scene), method="mixture", sub_footprints=4, size=(16, 9))
+    np.testing.assert_array_equal(mixture, tifffile.imread(tif)[..., :3])
+    one = cmfilter.render(str(scene), method="mixture", sub_footprints=1, size=(16, 9))
+    np.testing.assert_array_equal(one, cmfilter.render(str(scene), method="gaussian", size=(16, 9)))
+    assert np.abs(mixture - one).max() > 1e-3
+    with pytest.raises(cmfilter.Error, match=r"SubFootprintOptions::max_cells 17 is out of range") as e:
+        cmfilter.render(str(scene), method="mixture", sub_footprints=17)
+    assert e.value.field == "SubFootprintOptions::max_cells"

@@ -76,7 +76,7 @@ std::string bench_chart_script(const SceneBench& bench, const std::string& data_
               ? "     '' using ($1 == 7 ? $3 : 1/0):4 with points pt 4 ps 2 lc rgb 'dark-violet' title 'gaussian-exact (D_h moments)', \\\n"
               : "")
       << (has_mixture
-              ? "     '' using ($1 == 8 ? $3 : 1/0):4 with points pt 6 ps 2 lc rgb 'brown' title 'mixture (textures: four moments)', \\\n"
+              ? "     '' using ($1 == 8 ? $3 : 1/0):4 with points pt 6 ps 2 lc rgb 'brown' title 'mixture (textures: four moments; noise: sub-footprints)', \\\n"
               : "")
       << "     '' using ($1 == 1 ? $3 : 1/0):4 with points pt 7 ps 1.6 lc rgb 'blue' title 'gaussian, sqrt sigma spacing', \\\n"
       << "     '' using ($1 == 2 ? $3 : 1/0):4 with points pt 5 ps 1.4 lc rgb 'dark-cyan' title 'gaussian, linear sigma spacing', \\\n"

@@ -251,11 +251,13 @@ Expected<SceneBench> bench_scene(const Scene& scene, std::vector<Material>& mate
             if (auto st = prepare_histograms(scene, materials, mo); !st) return st.error();
         }
         if (c.method == RenderMethod::Mixture) {
-            // Four moments for the texture drivers baked in process; a scene
-            // without one would render gaussian.
-            if (std::none_of(materials.begin(), materials.end(), has_texture_driver)) {
+            // Four moments for the texture drivers baked in process; noise
+            // drivers take sub-footprints; a scene with neither would render
+            // gaussian.
+            if (std::none_of(materials.begin(), materials.end(), has_texture_driver) &&
+                std::none_of(materials.begin(), materials.end(), has_noise_driver)) {
                 if (options.note)
-                    options.note(scene.path + ": mixture: left out (no texture driver: it would be gaussian)");
+                    options.note(scene.path + ": mixture: left out (no texture or noise driver: it would be gaussian)");
                 continue;
             }
             MaterialOptions mo;
@@ -317,6 +319,7 @@ Expected<SceneBench> bench_scene(const Scene& scene, std::vector<Material>& mate
         r.threads = options.threads;
         r.footprint = c.footprint;
         r.max_probes = options.max_probes;
+        r.sub_footprints = options.sub_footprints;
         r.edge_coverage = options.edge_coverage;
         r.region = options.region;
         row.seconds = std::numeric_limits<double>::infinity();

@@ -114,6 +114,7 @@ struct BenchOptions {
     std::uint64_t seed = 0;
     int threads = 0;
     int max_probes = 16;                           // RenderOptions::max_probes for naive and gaussian
+    SubFootprintOptions sub_footprints;            // RenderOptions::sub_footprints for mixture
     bool edge_coverage = true;                     // RenderOptions::edge_coverage for naive and gaussian
     std::optional<PixelRegion> region;             // RenderOptions::region of every render; empty: the frame
     bool keep_reference = false;                   // keep the reference image in SceneBench::reference_image

@@ -4,6 +4,7 @@
 #include "cmfilter/texture/anisotropic_probes.h"
 #include "cmfilter/texture/footprint_width.h"
 #include "cmfilter/texture/histogram_pyramid.h"
+#include "cmfilter/noise/noise_sub_footprints.h"
 
 #include <string>
 
@@ -32,7 +33,9 @@ public:
                 const double o = (j + 0.5) / probes.count - 0.5;
                 const FilteredNoise::Parameters f =
                     noise_.filter(h.u + o * probes.step_u, h.v + o * probes.step_v, probes.width);
-                if (colour) out.albedo += albedo(f.mean, f.sigma, scratch.counts);
+                if (colour)
+                    out.albedo += albedo(h.u + o * probes.step_u, h.v + o * probes.step_v, probes.width, f, options,
+                                         scratch.counts);
                 out.mean += f.mean;
                 out.sigma += f.sigma;
             }
@@ -49,17 +52,25 @@ public:
         out.mean = f.mean;
         out.sigma = f.sigma;
         out.lod = noise_.lod(w);
-        if (colour) out.albedo = albedo(f.mean, f.sigma, scratch.counts);
+        if (colour) out.albedo = albedo(h.u, h.v, w, f, options, scratch.counts);
         return out;
     }
 
     Rgb point_albedo(double u, double v) const override { return color_.map.evaluate(noise_.noise()(u, v)); }
 
 private:
-    Rgb albedo(double mean, double sigma, AlbedoCounts& counts) const
+    // The colour of the footprint of width w at (u, v), filtered to f:
+    // naive C0(mean), gaussian T(mean, sigma), mixture over its
+    // sub-footprints (noise_sub_footprints.h; f's own where it takes one).
+    Rgb albedo(double u, double v, double w, const FilteredNoise::Parameters& f, const RenderOptions& options,
+               AlbedoCounts& counts) const
     {
-        return method_ == RenderMethod::Naive ? color_.map.evaluate(mean)
-                                              : gaussian_albedo(color_, mean, sigma, counts);
+        if (method_ == RenderMethod::Naive) return color_.map.evaluate(f.mean);
+        if (method_ != RenderMethod::Mixture) return gaussian_albedo(color_, f.mean, f.sigma, counts);
+        return sub_footprint_color<Rgb>(noise_, u, v, w, f, options.sub_footprints,
+                                        [&](const FilteredNoise::Parameters& p) {
+            return gaussian_albedo(color_, p.mean, p.sigma, counts);
+        });
     }
 
     const ColorLayer& color_;

@@ -4,8 +4,9 @@
 // the centre ray's footprint (surface_hit.h), cut along its major edge into
 // up to max_probes pieces (anisotropic_probes.h), each one width
 // (footprint_width.h): naive C0(mean), gaussian T(mean, sigma) (eq. 10;
-// C0(mean) below the small-sigma shortcut, gaussian_albedo.h), averaged over
-// the pieces. The ray-traced methods point-evaluate C0(f(x)) at each hit.
+// C0(mean) below the small-sigma shortcut, gaussian_albedo.h), mixture the
+// same over each piece's sub-footprints in the transition
+// (noise_sub_footprints.h), averaged over the pieces. The ray-traced methods point-evaluate C0(f(x)) at each hit.
 // exact is refused: a noise has no exact filtering distribution.
 #pragma once
 

@@ -185,6 +185,7 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<Material>& 
                          std::to_string(scene.surfaces.size()) + " surfaces");
     if (auto st = check_render_samples(options.samples); !st) return st.error();
     if (auto st = check_render_probes(options.max_probes); !st) return st.error();
+    if (auto st = check_sub_footprint_options(options.sub_footprints); !st) return st.error();
     // One renderer per surface, for its driver's kind (surface_renderer.h).
     std::vector<std::unique_ptr<SurfaceRenderer>> surfaces;
     for (std::size_t i = 0; i < materials.size(); ++i) {

@@ -4,6 +4,7 @@
 
 #include "cmfilter/microsurface/light_weighted_slope_map.h"
 #include "cmfilter/microsurface/smith_lambda.h"
+#include "cmfilter/noise/noise_sub_footprints.h"
 #include "cmfilter/render/pixel_region.h"
 #include "cmfilter/texture/footprint_width.h"
 #include "cmfilter/util/error.h"
@@ -17,7 +18,8 @@
 namespace cmfilter {
 
 // Mixture: texture drivers with four moments (math/moment_mixture.h, as
-// apply's); every other driver as Gaussian.
+// apply's); noise drivers as a mixture over sub-footprints in the transition
+// (noise/noise_sub_footprints.h); every other driver as Gaussian.
 enum class RenderMethod { Naive, Gaussian, GaussianExact, Exact, Supersample, Reference, Mixture };
 const char* to_string(RenderMethod method);
 Expected<RenderMethod> parse_render_method(const std::string& text);
@@ -65,6 +67,9 @@ struct RenderOptions {
     // index (render --method auto: chosen per material); empty, or a surface
     // past its end: `method`. Other drivers take `method`.
     std::vector<RenderMethod> texture_methods;
+    // Mixture, noise drivers: how many sub-footprints a footprint (or each
+    // probe of one) is cut into (noise_sub_footprints.h).
+    SubFootprintOptions sub_footprints;
     std::function<void(double)> progress;  // fraction of rows done, may be empty
 };
 

@@ -101,6 +101,9 @@ inline bool is_microsurface(const Material& m)
 // A material coloured through a texture driver (a moment pyramid).
 inline bool has_texture_driver(const Material& m) { return std::holds_alternative<TextureDriver>(m.driver); }
 
+// A material coloured through a procedural noise driver.
+inline bool has_noise_driver(const Material& m) { return std::holds_alternative<NoiseDriver>(m.driver); }
+
 // The microsurface's colours, or null for a noise or texture driver.
 inline const MicrosurfaceColors* microsurface_colors(const Material& m)
 {
