@@ -14,6 +14,7 @@
 #include "cmfilter/io/rgb_image_file.h"
 #include "cmfilter/math/vec3.h"
 #include "cmfilter/ops/method_choice.h"
+#include "cmfilter/ops/sub_footprint_choice.h"
 #include "cmfilter/render/pixel_region.h"
 #include "cmfilter/render/render_options.h"
 #include "cmfilter/scene/material.h"
@@ -179,7 +180,8 @@ void print_json(const std::string& command, nlohmann::json summary);
 nlohmann::json method_choice_json(const MethodChoice& choice);
 // --measure-lods L,L,...: the LODs a --tolerance choice measures
 // (MethodChoiceOptions::lods).
-void add_measure_lods_option(CLI::App& app, std::vector<double>& lods);
+// noise: render's, where the LODs are also a noise's.
+void add_measure_lods_option(CLI::App& app, std::vector<double>& lods, bool noise = false);
 void print_method_choice(std::ostream& out, const MethodChoice& choice);
 
 // render --method auto (render_method_choice.cpp): each texture surface's
@@ -195,6 +197,21 @@ Expected<std::vector<SurfaceMethodChoice>> choose_texture_methods(const Scene& s
                                                                   const ColorConfig& config,
                                                                   const MethodChoiceOptions& options, int threads);
 RenderMethod render_method_of(FilterMethod method);
+
+// render --method auto (render_method_choice.cpp): each noise surface's
+// fewest sub-footprints for the tolerance (ops/sub_footprint_choice.h:
+// measured on its noise, colour map and table against supersampling, at
+// `lods` (log2 of the width over the base period; empty: every integer LOD
+// of its sigma table)); BadInput naming the surface when none meets it.
+struct SurfaceSubFootprintChoice {
+    std::size_t surface = 0;
+    SubFootprintChoice choice;
+};
+Expected<std::vector<SurfaceSubFootprintChoice>>
+choose_noise_sub_footprints(const Scene& scene, const std::vector<Material>& materials, double tolerance,
+                            const std::vector<double>& lods, int threads);
+nlohmann::json sub_footprint_choice_json(const SubFootprintChoice& choice);
+void print_sub_footprint_choice(std::ostream& out, const SubFootprintChoice& choice);
 
 // A progress callback printing "\r<command>: N%" on stderr when the percent
 // changes (a newline at 100%); callers use it only when stderr is a terminal.

@@ -133,8 +133,9 @@ FieldFlags render_flags()
 Status run(const RenderArgs& args)
 {
     if (auto st = check_rgb_image_output(args.output); !st) return st;
-    // auto: each texture surface's method chosen for --tolerance
-    // (render_method_choice.cpp); every other surface gaussian.
+    // auto: each texture surface's method and each noise surface's
+    // sub-footprints chosen for --tolerance (render_method_choice.cpp);
+    // every other surface gaussian.
     const bool automatic = args.method == "auto";
     if (automatic && !args.tolerance)
         return bad_input("--method auto chooses each texture's method for a tolerance: it needs --tolerance DE");
@@ -200,6 +201,8 @@ Status run(const RenderArgs& args)
     if (!materials) return materials.error();
     std::vector<SurfaceMethodChoice> choices;
     std::vector<RenderMethod> texture_methods;
+    std::vector<SurfaceSubFootprintChoice> noise_choices;
+    std::vector<int> noise_sub_footprints;
     if (automatic) {
         MethodChoiceOptions co;
         co.tolerance = *args.tolerance;
@@ -223,6 +226,15 @@ Status run(const RenderArgs& args)
             material_options.moment_order = 4;
             if (auto st = prepare_moment_order(*scene, *materials, material_options); !st) return st;
         }
+        if (talk)
+            std::cerr << "render: measuring each noise's sub-footprints for --tolerance " << *args.tolerance << "\n";
+        auto squares =
+            choose_noise_sub_footprints(*scene, *materials, *args.tolerance, args.measure_lods, args.threads);
+        if (!squares) return squares.error();
+        noise_choices = std::move(*squares);
+        noise_sub_footprints.assign(materials->size(), 0);
+        for (const SurfaceSubFootprintChoice& c : noise_choices)
+            noise_sub_footprints[c.surface] = c.choice.choice()->max_cells;
     }
 
     RenderOptions options;
@@ -240,6 +252,7 @@ Status run(const RenderArgs& args)
     options.slope_shading = args.slope_shading == "correlated" ? SlopeShading::Correlated : SlopeShading::Uncorrelated;
     options.region = region;
     options.texture_methods = texture_methods;
+    options.noise_sub_footprints = noise_sub_footprints;
     if (talk && isatty(STDERR_FILENO)) options.progress = terminal_progress("render");
     auto image = render(*scene, *materials, options);
     if (!image) return image.error();
@@ -256,6 +269,11 @@ Status run(const RenderArgs& args)
             chosen += (chosen.empty() ? "" : ", ") + std::to_string(c.surface) + ": " +
                       to_string(c.choice.choice()->method);
         a.text.push_back({"cmfilter:texture_methods", chosen});
+        std::string squares;
+        for (const SurfaceSubFootprintChoice& c : noise_choices)
+            squares += (squares.empty() ? "" : ", ") + std::to_string(c.surface) + ": " +
+                       std::to_string(c.choice.choice()->max_cells);
+        a.text.push_back({"cmfilter:noise_sub_footprints", squares});
     }
     a.numbers = {{"cmfilter:samples", static_cast<double>(image->samples)},
                  {"cmfilter:seed", static_cast<double>(args.seed)}};
@@ -291,6 +309,10 @@ Status run(const RenderArgs& args)
             j["texture_methods"] = nlohmann::json::array();
             for (const SurfaceMethodChoice& c : choices)
                 j["texture_methods"].push_back({{"surface", c.surface}, {"choice", method_choice_json(c.choice)}});
+            j["noise_sub_footprints"] = nlohmann::json::array();
+            for (const SurfaceSubFootprintChoice& c : noise_choices)
+                j["noise_sub_footprints"].push_back(
+                    {{"surface", c.surface}, {"choice", sub_footprint_choice_json(c.choice)}});
         }
         j["samples"] = image->samples;
         j["seed"] = args.seed;
@@ -331,6 +353,14 @@ Status run(const RenderArgs& args)
             std::cout << "  surface " << c.surface << ": " << to_string(c.choice.choice()->method) << "\n";
             print_method_choice(std::cout, c.choice);
         }
+        for (const SurfaceSubFootprintChoice& c : noise_choices) {
+            const int n = c.choice.choice()->max_cells;
+            std::cout << "  surface " << c.surface << ": "
+                      << (n > 1 ? "mixture, up to " + std::to_string(n) + " x " + std::to_string(n) + " squares"
+                                : std::string("gaussian (one square)"))
+                      << "\n";
+            print_sub_footprint_choice(std::cout, c.choice);
+        }
     }
     return ok();
 }
@@ -345,7 +375,7 @@ Command setup_render(CLI::App& parent)
     app->add_option("-o,--output", args->output, "Image to write (.exr scene-linear, .png/.jpg sRGB)")->required();
     app->add_option(
            "--method", args->method,
-           "naive, gaussian, gaussian-exact (microsurfaces: D_h's exact moments), mixture (texture drivers: two Gaussians of four moments; noise drivers: a Gaussian per square of a footprint cut into up to --sub-footprints squares per axis in the transition; others as gaussian), exact (microsurfaces, or texture drivers with at most 256 values), supersample, reference, or auto (with --tolerance: each texture's cheapest method that meets it, measured; others gaussian)")
+           "naive, gaussian, gaussian-exact (microsurfaces: D_h's exact moments), mixture (texture drivers: two Gaussians of four moments; noise drivers: a Gaussian per square of a footprint cut into up to --sub-footprints squares per axis in the transition; others as gaussian), exact (microsurfaces, or texture drivers with at most 256 values), supersample, reference, or auto (with --tolerance: each texture's cheapest method and each noise's fewest sub-footprints that meet it, measured; others gaussian)")
         ->capture_default_str();
     app->add_option("--size,--resolution", args->size,
                     "Render at WxH instead of the scene's camera resolution (the same camera and vertical field "
@@ -394,7 +424,7 @@ Command setup_render(CLI::App& parent)
     app->add_option("--threads", args->threads, "Threads (0: all cores)")->capture_default_str();
     app->add_flag("--json", args->json, "Print a machine-readable summary on stdout");
     app->add_flag("-q,--quiet", args->quiet, "Print nothing on success (and no progress)");
-    add_measure_lods_option(*app, args->measure_lods);
+    add_measure_lods_option(*app, args->measure_lods, true);
     return {app, [args] { return run(*args); }, render_flags()};
 }
 

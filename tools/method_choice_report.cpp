@@ -33,12 +33,48 @@ nlohmann::json method_choice_json(const MethodChoice& choice)
             {"skipped", choice.skipped}};
 }
 
-void add_measure_lods_option(CLI::App& app, std::vector<double>& lods)
+void add_measure_lods_option(CLI::App& app, std::vector<double>& lods, bool noise)
 {
     app.add_option("--measure-lods", lods,
-                   "LODs --tolerance measures each method at, comma-separated (default: every integer LOD from 1 "
-                   "to 8 the pyramid reaches)")
+                   noise ? "LODs --tolerance measures each method at, comma-separated: pyramid levels for textures "
+                           "(default: every integer LOD from 1 to 8 the pyramid reaches), log2(width / base period) "
+                           "for noises (default: every integer LOD of the sigma table)"
+                         : "LODs --tolerance measures each method at, comma-separated (default: every integer LOD "
+                           "from 1 to 8 the pyramid reaches)")
         ->delimiter(',');
+}
+
+nlohmann::json sub_footprint_choice_json(const SubFootprintChoice& choice)
+{
+    nlohmann::json trials = nlohmann::json::array();
+    for (const SubFootprintTrial& t : choice.trials)
+        trials.push_back({{"max_cells", t.max_cells},
+                          {"errors", t.errors},
+                          {"worst", t.worst},
+                          {"worst_lod", t.worst_lod},
+                          {"meets", t.meets}});
+    nlohmann::json j = {{"tolerance", choice.tolerance}, {"lods", choice.lods}, {"trials", trials}};
+    j["chosen"] = choice.choice() ? nlohmann::json(choice.choice()->max_cells) : nlohmann::json(nullptr);
+    return j;
+}
+
+void print_sub_footprint_choice(std::ostream& out, const SubFootprintChoice& choice)
+{
+    const auto flags = out.flags();
+    const auto precision = out.precision();
+    out << std::setprecision(3) << "  tolerance  mean CIEDE2000 <= " << choice.tolerance << " at LOD "
+        << lod_list_text(choice.lods) << ":\n";
+    for (std::size_t i = 0; i < choice.trials.size(); ++i) {
+        const SubFootprintTrial& t = choice.trials[i];
+        out << "    up to " << std::setw(2) << t.max_cells << " x " << std::left << std::setw(2) << t.max_cells
+            << std::right << " squares, worst " << std::setw(7) << t.worst << " (LOD " << t.worst_lod << ")"
+            << (choice.chosen == i ? "  <- chosen"
+                : t.meets          ? "  meets"
+                                   : "")
+            << "\n";
+    }
+    out.flags(flags);
+    out.precision(precision);
 }
 
 void print_method_choice(std::ostream& out, const MethodChoice& choice)

@@ -7,6 +7,8 @@
 // written to temporary files and measured against the box reference.
 #include "command.h"
 
+#include "cmfilter/ops/sub_footprint_choice.h"
+#include "cmfilter/tables/gaussian_albedo.h"
 #include "cmfilter/tables/gaussian_color_table_file.h"
 #include "cmfilter/texture/histogram_pyramid.h"
 #include "cmfilter/texture/moment_pyramid.h"
@@ -99,6 +101,43 @@ Expected<std::vector<SurfaceMethodChoice>> choose_texture_methods(const Scene& s
             for (std::string& why : choice->skipped)
                 if (why.rfind("exact:", 0) == 0) why = too_large;
         if (!choice->choice()) return no_method_meets(*choice, surface);
+        out.push_back({i, std::move(*choice)});
+    }
+    return out;
+}
+
+Expected<std::vector<SurfaceSubFootprintChoice>>
+choose_noise_sub_footprints(const Scene& scene, const std::vector<Material>& materials, double tolerance,
+                            const std::vector<double>& lods, int threads)
+{
+    std::vector<SurfaceSubFootprintChoice> out;
+    for (std::size_t i = 0; i < materials.size(); ++i) {
+        const Material& m = materials[i];
+        const auto* noise = std::get_if<NoiseDriver>(&m.driver);
+        if (!noise || is_microsurface(m)) continue;
+        const std::string surface = "surface " + std::to_string(i) + " (" + scene.path + ")";
+        SubFootprintChoiceOptions o;
+        o.tolerance = tolerance;
+        o.lods = lods;
+        o.threads = threads;
+        const ColorLayer& layer = m.color;
+        auto choice = choose_sub_footprints(
+            noise->noise, layer.map,
+            [&layer](double mean, double sigma) {
+            AlbedoCounts counts;
+            return gaussian_albedo(layer, mean, sigma, counts);
+            },
+            o);
+        if (!choice) return prefixed(surface + ": ", choice.error());
+        if (!choice->choice()) {
+            const SubFootprintTrial* best = choice->best();
+            std::ostringstream msg;
+            msg << surface << ": no number of sub-footprints meets --tolerance " << tolerance
+                << " (mean CIEDE2000 at every LOD " << lod_list_text(choice->lods)
+                << " of its noise): the closest, up to " << best->max_cells << " x " << best->max_cells
+                << " squares, is " << best->worst << " at LOD " << best->worst_lod;
+            return bad_input(msg.str());
+        }
         out.push_back({i, std::move(*choice)});
     }
     return out;

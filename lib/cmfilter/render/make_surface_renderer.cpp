@@ -29,10 +29,14 @@ Expected<std::unique_ptr<SurfaceRenderer>> make_surface_renderer(const Material&
     return std::visit(
         [&](const auto& driver) -> Made {
             using Driver = std::decay_t<decltype(driver)>;
-            if constexpr (std::is_same_v<Driver, NoiseDriver>)
-                return as_renderer<DriverRenderer, SurfaceRenderer>(
-                    make_noise_renderer(material.color, driver, surface, options.method));
-            else if constexpr (std::is_same_v<Driver, TextureDriver>)
+            if constexpr (std::is_same_v<Driver, NoiseDriver>) {
+                const int chosen = surface < options.noise_sub_footprints.size() ? options.noise_sub_footprints[surface]
+                                                                                 : 0;
+                SubFootprintOptions squares = options.sub_footprints;
+                if (chosen > 0) squares.max_cells = chosen;
+                return as_renderer<DriverRenderer, SurfaceRenderer>(make_noise_renderer(
+                    material.color, driver, surface, chosen > 0 ? RenderMethod::Mixture : options.method, squares));
+            } else if constexpr (std::is_same_v<Driver, TextureDriver>)
                 return as_renderer<DriverRenderer, SurfaceRenderer>(make_texture_renderer(
                     material, driver, surface,
                     surface < options.texture_methods.size() ? options.texture_methods[surface] : options.method,

@@ -14,8 +14,9 @@ namespace {
 
 class NoiseRenderer : public DriverRenderer {
 public:
-    NoiseRenderer(const ColorLayer& color, const FilteredNoise& noise, RenderMethod method)
-        : color_(color), noise_(noise), method_(method)
+    NoiseRenderer(const ColorLayer& color, const FilteredNoise& noise, RenderMethod method,
+                  const SubFootprintOptions& squares)
+        : color_(color), noise_(noise), method_(method), squares_(squares)
     {
     }
 
@@ -34,8 +35,8 @@ public:
                 const FilteredNoise::Parameters f =
                     noise_.filter(h.u + o * probes.step_u, h.v + o * probes.step_v, probes.width);
                 if (colour)
-                    out.albedo += albedo(h.u + o * probes.step_u, h.v + o * probes.step_v, probes.width, f, options,
-                                         scratch.counts);
+                    out.albedo +=
+                        albedo(h.u + o * probes.step_u, h.v + o * probes.step_v, probes.width, f, scratch.counts);
                 out.mean += f.mean;
                 out.sigma += f.sigma;
             }
@@ -52,7 +53,7 @@ public:
         out.mean = f.mean;
         out.sigma = f.sigma;
         out.lod = noise_.lod(w);
-        if (colour) out.albedo = albedo(h.u, h.v, w, f, options, scratch.counts);
+        if (colour) out.albedo = albedo(h.u, h.v, w, f, scratch.counts);
         return out;
     }
 
@@ -62,13 +63,16 @@ private:
     // The colour of the footprint of width w at (u, v), filtered to f:
     // naive C0(mean), gaussian T(mean, sigma), mixture over its
     // sub-footprints (noise_sub_footprints.h; f's own where it takes one).
-    Rgb albedo(double u, double v, double w, const FilteredNoise::Parameters& f, const RenderOptions& options,
-               AlbedoCounts& counts) const
+    // Mixture takes gaussian's colour where the whole footprint is below the
+    // small-sigma shortcut (gaussian_albedo.h): there C0 is linear within the
+    // shortcut's bound over the footprint's values, so the squares' colours
+    // average to the colour of their mean.
+    Rgb albedo(double u, double v, double w, const FilteredNoise::Parameters& f, AlbedoCounts& counts) const
     {
         if (method_ == RenderMethod::Naive) return color_.map.evaluate(f.mean);
-        if (method_ != RenderMethod::Mixture) return gaussian_albedo(color_, f.mean, f.sigma, counts);
-        return sub_footprint_color<Rgb>(noise_, u, v, w, f, options.sub_footprints,
-                                        [&](const FilteredNoise::Parameters& p) {
+        if (method_ != RenderMethod::Mixture || f.sigma < color_.plain.below(f.mean))
+            return gaussian_albedo(color_, f.mean, f.sigma, counts);
+        return sub_footprint_color<Rgb>(noise_, u, v, w, f, squares_, [&](const FilteredNoise::Parameters& p) {
             return gaussian_albedo(color_, p.mean, p.sigma, counts);
         });
     }
@@ -76,18 +80,21 @@ private:
     const ColorLayer& color_;
     const FilteredNoise& noise_;
     RenderMethod method_;
+    SubFootprintOptions squares_;
 };
 
 }  // namespace
 
 Expected<std::unique_ptr<DriverRenderer>> make_noise_renderer(const ColorLayer& color, const NoiseDriver& driver,
-                                                              std::size_t surface, RenderMethod colour_method)
+                                                              std::size_t surface, RenderMethod colour_method,
+                                                              const SubFootprintOptions& squares)
 {
     if (colour_method == RenderMethod::Exact)
         return bad_input("render: surface " + std::to_string(surface) + ": exact needs a texture driver with at most " +
                          std::to_string(kHistogramMaxValues) +
                          " distinct values; noise drivers have no exact filtering distribution");
-    return std::unique_ptr<DriverRenderer>(std::make_unique<NoiseRenderer>(color, driver.noise, colour_method));
+    return std::unique_ptr<DriverRenderer>(
+        std::make_unique<NoiseRenderer>(color, driver.noise, colour_method, squares));
 }
 
 }  // namespace cmfilter

@@ -14,7 +14,9 @@
 
 namespace cmfilter {
 
+// `squares`: mixture's sub-footprints (checked by the caller).
 Expected<std::unique_ptr<DriverRenderer>> make_noise_renderer(const ColorLayer& color, const NoiseDriver& driver,
-                                                              std::size_t surface, RenderMethod colour_method);
+                                                              std::size_t surface, RenderMethod colour_method,
+                                                              const SubFootprintOptions& squares);
 
 }  // namespace cmfilter

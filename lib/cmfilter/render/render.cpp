@@ -186,6 +186,11 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<Material>& 
     if (auto st = check_render_samples(options.samples); !st) return st.error();
     if (auto st = check_render_probes(options.max_probes); !st) return st.error();
     if (auto st = check_sub_footprint_options(options.sub_footprints); !st) return st.error();
+    for (int n : options.noise_sub_footprints)
+        if (n < 0 || n > kMaxSubFootprintCells)
+            return bad_input("RenderOptions::noise_sub_footprints holds " + std::to_string(n) + " (expected 0 to " +
+                                 std::to_string(kMaxSubFootprintCells) + ")",
+                             "RenderOptions::noise_sub_footprints");
     // One renderer per surface, for its driver's kind (surface_renderer.h).
     std::vector<std::unique_ptr<SurfaceRenderer>> surfaces;
     for (std::size_t i = 0; i < materials.size(); ++i) {

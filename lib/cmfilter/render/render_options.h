@@ -70,6 +70,11 @@ struct RenderOptions {
     // Mixture, noise drivers: how many sub-footprints a footprint (or each
     // probe of one) is cut into (noise_sub_footprints.h).
     SubFootprintOptions sub_footprints;
+    // The most squares per axis of each surface with a noise driver, by
+    // surface index (render --method auto: chosen per material): a count >= 1
+    // renders that surface by mixture with it (1: as gaussian); empty, 0 or
+    // past its end: `method` with `sub_footprints`.
+    std::vector<int> noise_sub_footprints;
     std::function<void(double)> progress;  // fraction of rows done, may be empty
 };
 

@@ -4,10 +4,10 @@
 // the same as one Gaussian outside it, continuous across every change of the
 // number of squares, the squares where they belong, and its options checked.
 #include "cmfilter/color/ciede2000.h"
-#include "cmfilter/noise/noise_sigma_bake.h"
-#include "cmfilter/noise/noise_spec.h"
 #include "cmfilter/noise/noise_sub_footprints.h"
 #include "cmfilter/tables/gaussian_convolution.h"
+
+#include "noise_transition_fixture.h"
 
 #include <doctest/doctest.h>
 
@@ -19,44 +19,8 @@ using namespace cmfilter;
 
 namespace {
 
-struct Fixture {
-    FilteredNoise noise;
-    ColorMap map;
-};
-
-// 6-octave gradient fBm, its sigma table (a small bake: 256 footprints per
-// LOD) and a hue cycle over its mean +- 2.78 standard deviations, as
-// docs/noise-accuracy.md lays its maps.
-const Fixture& fixture()
-{
-    static const Fixture f = [] {
-        auto spec = parse_noise_spec("fbm:base=gradient,octaves=6");
-        REQUIRE(spec);
-        auto noise = make_noise(*spec);
-        REQUIRE(noise);
-        NoiseSigmaBakeOptions options;
-        options.lod_step = 0.5;
-        options.lod_last = 3.5;
-        options.initial_footprints = 256;
-        options.max_footprints = 256;
-        options.global_samples = 1 << 14;
-        auto bake = bake_noise_sigma(*noise, options);
-        REQUIRE(bake);
-        auto table = bake->table(FootprintShape::Box);
-        REQUIRE(table);
-        ColorMap map;
-        const int n = 64;
-        for (int i = 0; i < n; ++i) {
-            const double a = 2 * M_PI * (i + 0.5) / n;
-            map.texels.push_back(
-                {0.5 + 0.45 * std::cos(a), 0.5 + 0.45 * std::cos(a - 2.0944), 0.5 + 0.45 * std::cos(a + 2.0944)});
-        }
-        map.vmin = bake->global.mean - 2.78 * bake->global.sigma;
-        map.vmax = bake->global.mean + 2.78 * bake->global.sigma;
-        return Fixture{FilteredNoise(*noise, *table), map};
-    }();
-    return f;
-}
+using Fixture = cmfilter_test::NoiseTransitionFixture;
+const Fixture& fixture() { return cmfilter_test::noise_transition_fixture(); }
 
 Rgb colour_of(const FilteredNoise::Parameters& p) { return gaussian_convolution(fixture().map, p.mean, p.sigma); }
 
@@ -91,13 +55,7 @@ TEST_CASE("in the transition the mixture comes within 1.5 of supersampling, one 
         const int footprints = 48, strata = 24;
         for (int j = 0; j < footprints; ++j) {
             const double x = 256 * p0 * u(rng), y = 256 * p0 * u(rng);
-            // Reference: C0 of the noise itself at jittered stratified points.
-            Rgb reference;
-            for (int a = 0; a < strata; ++a)
-                for (int b = 0; b < strata; ++b)
-                    reference += f.map.evaluate(
-                        f.noise.noise()(x + w * ((a + u(rng)) / strata - 0.5), y + w * ((b + u(rng)) / strata - 0.5)));
-            reference = (1.0 / (strata * strata)) * reference;
+            const Rgb reference = cmfilter_test::supersampled_colour(f, x, y, w, strata, rng);
             mixture_error += ciede2000_linear_rgb(reference, mixture(x, y, w));
             gaussian_error += ciede2000_linear_rgb(reference, colour_of(f.noise.filter(x, y, w)));
         }
