@@ -45,11 +45,13 @@ TextureColor parse_texture_color(const std::string& method)
     if (method == "naive") return TextureColor::Naive;
     if (method == "gaussian") return TextureColor::Gaussian;
     if (method == "exact") return TextureColor::Exact;
-    bad_argument("method '" + method + "' is unknown (expected none, naive, gaussian or exact)");
+    if (method == "mixture") return TextureColor::Mixture;
+    bad_argument("method '" + method + "' is unknown (expected none, naive, gaussian, mixture or exact)");
 }
 
 // The colour layer a method needs: C0 for naive and exact, T for gaussian
-// (without the small-sigma shortcut), the histograms for exact.
+// and mixture (without the small-sigma shortcut; mixture also four moments),
+// the histograms for exact.
 ColorLayer footprint_layer(TextureColor colour, const LoadedColorMap* colormap, const LoadedGaussianColorTable* table,
                            const HistogramTexture* histograms, const MomentTexture& moments)
 {
@@ -58,6 +60,13 @@ ColorLayer footprint_layer(TextureColor colour, const LoadedColorMap* colormap, 
         bad_argument(std::string("method ") + (colour == TextureColor::Naive ? "naive" : "exact") +
                      " needs colormap (a ColorMap)");
     if (colour == TextureColor::Gaussian && !table) bad_argument("method gaussian needs table (a ColorTable)");
+    if (colour == TextureColor::Mixture) {
+        if (!table) bad_argument("method mixture needs table (a ColorTable)");
+        if (moments.info().order != 4)
+            bad_argument("method mixture needs a moment pyramid of order 4 (MomentPyramid.bake(..., order=4)); this "
+                         "one holds " +
+                         std::to_string(moments.info().order) + " moments");
+    }
     if (colour == TextureColor::Exact) {
         if (!histograms) bad_argument("method exact needs histograms (the driver's HistogramPyramid)");
         const HistogramPyramidInfo& h = histograms->info();
@@ -217,7 +226,8 @@ void bind_moments(py::module_& m)
             "`probes` pieces, each a square of the `footprint` width (rms, area, major, minor) looked up "
             "trilinearly. A dict of arrays of the broadcast shape: mean and sigma (the probes' means), lod (of one "
             "probe's width, log2 in level-0 texels), probes (int32); with method naive (C0(mean_j), needs "
-            "colormap), gaussian (T(mean_j, sigma_j), needs table) or exact (sum_b h_b C0(v_b), needs colormap and "
+            "colormap), gaussian (T(mean_j, sigma_j), needs table), mixture (two Gaussians from each probe's four "
+            "moments, needs table and an order-4 pyramid) or exact (sum_b h_b C0(v_b), needs colormap and "
             "histograms) also albedo (..., 3), the mean of the probes' colours.")
         .def(
             "level",

@@ -157,6 +157,11 @@ Status run(const BenchArgs& args)
                 (std::filesystem::path(args.charts) / (std::filesystem::path(path).stem().string() + ".png")).string();
             if (auto st = write_bench_chart(*bench, png); !st) return st;
             if (!args.quiet) std::cerr << "bench: wrote " << png << "\n";
+            const std::string bytes_png =
+                (std::filesystem::path(args.charts) / (std::filesystem::path(path).stem().string() + "-bytes.png"))
+                    .string();
+            if (auto st = write_bench_chart(*bench, bytes_png, ChartAxis::Bytes); !st) return st;
+            if (!args.quiet) std::cerr << "bench: wrote " << bytes_png << "\n";
         }
         if (!args.references.empty()) {
             const std::string exr = reference_path(args.references, path);
@@ -180,7 +185,9 @@ Command setup_bench(CLI::App& parent)
         parent.add_subcommand("bench", "Time every render method on scenes and measure its error against a reference");
     app->add_option("scenes", args->scenes, "Scene files (JSON, docs/scene-format.md)")->required();
     app->add_option("--csv", args->csv, "CSV to write: one row per scene and configuration")->required();
-    app->add_option("--charts", args->charts, "Folder for one chart per scene (SCENE.png; needs gnuplot)");
+    app->add_option(
+        "--charts", args->charts,
+        "Folder for two charts per scene: error against time (SCENE.png) and against bytes read (SCENE-bytes.png); needs gnuplot");
     app->add_option("--size,--resolution", args->resolution, "Render every scene at WxH instead of its own resolution");
     app->add_option("--region", args->region,
                     "Render and compare only the pixels x0,y0,x1,y1 of every scene's frame (after --size; x0,y0 "

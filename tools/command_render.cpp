@@ -138,7 +138,8 @@ Status run(const RenderArgs& args)
     // every other surface gaussian.
     const bool automatic = args.method == "auto";
     if (automatic && !args.tolerance)
-        return bad_input("--method auto chooses each texture's method for a tolerance: it needs --tolerance DE");
+        return bad_input("--method auto chooses each texture's method and each noise's sub-footprints for a "
+                         "tolerance: it needs --tolerance DE");
     auto method = parse_render_method(automatic ? "gaussian" : args.method);
     if (!method) return method.error();
     auto footprint = parse_footprint_width(args.footprint);
@@ -394,7 +395,7 @@ Command setup_render(CLI::App& parent)
         ->capture_default_str();
     app->add_option("--sub-footprints", args->sub_footprints,
                     "mixture, noise drivers: cut a footprint (or probe) in the transition into up to N x N squares, "
-                    "one Gaussian each (1 to 16; 1: as gaussian)")
+                    "one Gaussian each (1 to 16; 1: as gaussian; --method auto measures it per noise instead)")
         ->capture_default_str();
     app->add_option("--masking", args->masking,
                     "Microsurfaces: masking and shadowing correlated by the view's and the light's azimuths "

@@ -11,6 +11,20 @@ set_tests_properties(cli.bench.csv-rows PROPERTIES FIXTURES_REQUIRED bench_csv L
     PASS_REGULAR_EXPRESSION "^22\n")
 add_test(NAME cli.bench.chart COMMAND ${CMAKE_COMMAND} -E cat ${OUT}/good.png)
 set_tests_properties(cli.bench.chart PROPERTIES FIXTURES_REQUIRED bench_csv LABELS cli)
+add_test(NAME cli.bench.chart-bytes COMMAND ${CMAKE_COMMAND} -E cat ${OUT}/good-bytes.png)
+set_tests_properties(cli.bench.chart-bytes PROPERTIES FIXTURES_REQUIRED bench_csv LABELS cli)
+# driver_bytes: the scene's sigma table as stored, 45 float32 nodes
+# (oiiotool --info: 45 x 1) for the filtered methods, nothing for the
+# procedural noise's supersampling.
+add_test(NAME cli.bench.driver-bytes
+         COMMAND bash -c "grep -c '^[^,]*good.json,\\(gaussian 256x256 sqrt\\|mixture\\|naive\\),.*,180$' $0 && grep -c '^[^,]*good.json,supersample 4,.*,0$' $0"
+                 ${OUT}/bench.csv)
+set_tests_properties(cli.bench.driver-bytes PROPERTIES FIXTURES_REQUIRED bench_csv LABELS cli
+    PASS_REGULAR_EXPRESSION "^3\n1\n")
+# Every row has the header's columns.
+add_test(NAME cli.bench.csv-columns
+         COMMAND bash -c "awk -F, 'NR == 1 { n = NF } NF != n { bad = 1 } END { exit bad }' $0" ${OUT}/bench.csv)
+set_tests_properties(cli.bench.csv-columns PROPERTIES FIXTURES_REQUIRED bench_csv LABELS cli)
 # exact runs on a scene whose driver has four values (one row), and is left
 # out on the noise scene above. The configurations the summary
 # reads, not the tolerance bakes bench.small times.

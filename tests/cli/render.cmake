@@ -95,7 +95,7 @@ cmfilter_cli_case(NAME render.auto-records-choice EXIT 0
                   COMMAND bash -c "set -o pipefail && ($0 render $1 --method auto --tolerance 100 --measure-lods 1 -o $2 -q && oiiotool --info -v $2) | tr '\\n' ' '"
                           ${CMF} ${SCB}/texture-auto.json ${OUT}/render-auto.exr)
 cmfilter_cli_case(NAME render.bad.auto-without-tolerance EXIT 3
-                  STDERR "--method auto chooses each texture's method for a tolerance: it needs --tolerance DE"
+                  STDERR "--method auto chooses each texture's method and each noise's sub-footprints for a tolerance: it needs --tolerance DE"
                   ABSENT ${RO} COMMAND ${CMF} render ${SCB}/texture-auto.json --method auto -o ${RO})
 # The exact method: a driver image with four values (its histograms baked in
 # process); a noise driver and a driver with 1024 values are refused.

@@ -204,3 +204,25 @@ def test_exact_colour_is_the_box_mean_of_c0(quantised, tmp_path, luts):
     with pytest.raises(cmfilter.Error, match="1024 distinct values") as e:
         cmfilter.HistogramPyramid.bake(str(tmp_path / "smooth.tif"), str(tmp_path / "h.exr"))
     assert e.value.kind == "bad_input"
+
+
+def test_mixture_colour_of_a_two_valued_driver_is_the_box_mean_of_c0(tmp_path, luts):
+    # Two values: each probe's four moments give its two values and their
+    # shares exactly, so mixture's colour is the box mean of C0 over the
+    # footprint's texels (up to the table's own sigma-0 error), where one
+    # Gaussian is not.
+    rng = np.random.default_rng(11)
+    path = tmp_path / "two.png"
+    f = write_png8(path, rng.choice([51, 204], size=(32, 32)) / 255)
+    moments = cmfilter.MomentPyramid.bake(str(path), str(tmp_path / "moments4.exr"), order=4)
+    colormap = cmfilter.ColorMap.load(str(luts / "terrain.png"))
+    table = cmfilter.ColorTable.bake(colormap, values=1024, sigmas=32, sigma_max=0.6)
+    colors = c0(linear_colormap(luts / "terrain.png"), 0, 1, f)
+    mixture = moments.lookup_footprint(12 / 32, 7 / 32, 8 / 32, 0, 0, 2 / 32, method="mixture", table=table)
+    expected = colors[6:8, 8:16].mean(axis=(0, 1))
+    np.testing.assert_allclose(mixture["albedo"], expected, atol=3e-3)
+    gaussian = moments.lookup_footprint(12 / 32, 7 / 32, 8 / 32, 0, 0, 2 / 32, method="gaussian", table=table)
+    assert np.abs(gaussian["albedo"] - expected).max() > 10 * np.abs(mixture["albedo"] - expected).max()
+    two = cmfilter.MomentPyramid.bake(str(path), str(tmp_path / "moments2.exr"))
+    with pytest.raises(cmfilter.Error, match="order 4"):
+        two.lookup_footprint(0.5, 0.5, 0.1, 0, 0, 0.1, method="mixture", table=table)

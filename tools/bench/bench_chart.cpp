@@ -36,8 +36,10 @@ std::string fixed(double value, int digits)
 
 }  // namespace
 
-std::string bench_chart_script(const SceneBench& bench, const std::string& data_path, const std::string& png_path)
+std::string bench_chart_script(const SceneBench& bench, const std::string& data_path, const std::string& png_path,
+                               ChartAxis axis)
 {
+    const bool time = axis == ChartAxis::Time;
     const bool has_exact = std::any_of(bench.rows.begin(), bench.rows.end(),
                                        [](const BenchRow& r) { return r.configuration.method == RenderMethod::Exact; });
     const bool has_gaussian_exact = std::any_of(bench.rows.begin(), bench.rows.end(), [](const BenchRow& r) {
@@ -57,16 +59,19 @@ std::string bench_chart_script(const SceneBench& bench, const std::string& data_
                 std::to_string(bench.width) + " x " + std::to_string(bench.height) + ": error against a " +
                 std::to_string(bench.reference_samples) + "-ray reference (two agree to " +
                 fixed(bench.reference_repeatability.all.mean, 2) + ")")
-      << " noenhanced\n"
-      << "set xrange [*:" << 2 * bench.reference_seconds << "]\n"
-      << "set logscale xy\nset grid\nset bmargin 9\nset key outside below center horizontal maxcols 2 box noenhanced font 'sans,10'\n"
-      << "set xlabel 'render time (s, pixel loop)' offset 0,0.4\nset ylabel 'mean CIEDE2000 over the pixels a surface covers'\n"
-      << "set datafile separator '\\t'\n"
-      << "set arrow from " << bench.reference_seconds << ", graph 0 to " << bench.reference_seconds
-      << ", graph 1 nohead dt 3 lc rgb 'gray40'\n"
-      << "set label 'reference time' at " << bench.reference_seconds
-      << ", graph 0.95 right offset -0.5,0 tc rgb 'gray40'\n"
-      << "f(x) = 1.0\n"
+      << " noenhanced\n";
+    if (time) s << "set xrange [*:" << 2 * bench.reference_seconds << "]\n";
+    s << "set logscale xy\nset grid\nset bmargin 9\nset key outside below center horizontal maxcols 2 box noenhanced font 'sans,10'\n"
+      << (time ? "set xlabel 'render time (s, pixel loop)' offset 0,0.4\n"
+               : "set xlabel 'bytes read (colour tables + driver data; 1: procedural)' offset 0,0.4\n")
+      << "set ylabel 'mean CIEDE2000 over the pixels a surface covers'\n"
+      << "set datafile separator '\\t'\n";
+    if (time)
+        s << "set arrow from " << bench.reference_seconds << ", graph 0 to " << bench.reference_seconds
+          << ", graph 1 nohead dt 3 lc rgb 'gray40'\n"
+          << "set label 'reference time' at " << bench.reference_seconds
+          << ", graph 0.95 right offset -0.5,0 tc rgb 'gray40'\n";
+    s << "f(x) = 1.0\n"
       << "plot " << quoted(data_path)
       << " using ($1 == 0 ? $3 : 1/0):4 with points pt 9 ps 2 lc rgb 'red' title 'naive', \\\n"
       << (has_exact
@@ -89,7 +94,7 @@ std::string bench_chart_script(const SceneBench& bench, const std::string& data_
     return s.str();
 }
 
-Status write_bench_chart(const SceneBench& bench, const std::string& png_path)
+Status write_bench_chart(const SceneBench& bench, const std::string& png_path, ChartAxis axis)
 {
     if (auto st = check_output_path(png_path, ".png"); !st) return st;
     auto out = AtomicOutput::begin(png_path);
@@ -104,7 +109,7 @@ Status write_bench_chart(const SceneBench& bench, const std::string& png_path)
         struct Point {
             int series = 0;
             std::string label;
-            double seconds = 0, error = 0, label_y = 0;
+            double x = 0, error = 0, label_y = 0;  // x: seconds or bytes (ChartAxis)
             bool labelled = true;
         };
         std::vector<Point> points;
@@ -132,7 +137,8 @@ Status write_bench_chart(const SceneBench& bench, const std::string& png_path)
             } else if (c.method == RenderMethod::Mixture) {
                 pt.series = 8;
             }
-            pt.seconds = r.seconds;
+            pt.x = axis == ChartAxis::Time ? r.seconds
+                                           : std::max(1.0, static_cast<double>(r.table_bytes + r.driver_bytes));
             pt.error = std::max(r.error.all.mean, 1e-4);
             pt.label_y = pt.error;
             points.push_back(pt);
@@ -147,13 +153,17 @@ Status write_bench_chart(const SceneBench& bench, const std::string& png_path)
         // A label's extent in decades of time: the plot is about 790 pixels
         // wide over the data's decades (to twice the reference's time, rounded
         // out to whole decades), a character of the labels' font about 6.5.
-        double fastest = bench.reference_seconds;
-        for (const Point& pt : points) fastest = std::min(fastest, pt.seconds);
-        const double decades = std::max(1.0, std::ceil(std::log10(2 * bench.reference_seconds)) -
-                                                 std::floor(std::log10(std::max(fastest, 1e-9))));
+        double fastest = axis == ChartAxis::Time ? bench.reference_seconds : 1e300;
+        double slowest = axis == ChartAxis::Time ? 2 * bench.reference_seconds : 1;
+        for (const Point& pt : points) {
+            fastest = std::min(fastest, pt.x);
+            slowest = std::max(slowest, pt.x);
+        }
+        const double decades =
+            std::max(1.0, std::ceil(std::log10(slowest)) - std::floor(std::log10(std::max(fastest, 1e-9))));
         const double decades_per_char = 7.0 * decades / 760;
         const auto extent = [&](const Point* pt) {
-            const double start = std::log10(pt->seconds * 1.3);
+            const double start = std::log10(pt->x * 1.3);
             return std::make_pair(start, start + decades_per_char * (static_cast<double>(pt->label.size()) + 1));
         };
         // Lower labels stay, higher ones move up, until no two overlap.
@@ -173,9 +183,9 @@ Status write_bench_chart(const SceneBench& bench, const std::string& png_path)
         }
         std::ofstream d(data);
         for (const Point& pt : points)
-            d << pt.series << "\t" << pt.label << "\t" << pt.seconds << "\t" << pt.error << "\t" << pt.label_y << "\t"
+            d << pt.series << "\t" << pt.label << "\t" << pt.x << "\t" << pt.error << "\t" << pt.label_y << "\t"
               << (pt.labelled ? 1 : 0) << "\n";
-        program = bench_chart_script(bench, data, out->temp_path());
+        program = bench_chart_script(bench, data, out->temp_path(), axis);
     }
     auto drawn = run_gnuplot(program);
     std::remove(data.c_str());

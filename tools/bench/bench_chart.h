@@ -15,11 +15,16 @@
 
 namespace cmfilter::bench {
 
+// What a chart's x axis is: each configuration's render time, or the bytes
+// it reads (BenchRow::table_bytes + driver_bytes; 1 for none).
+enum class ChartAxis { Time, Bytes };
+
 // The gnuplot program that draws `bench` into `png_path` from `data_path`
 // (written by write_bench_chart beside it).
-std::string bench_chart_script(const SceneBench& bench, const std::string& data_path, const std::string& png_path);
+std::string bench_chart_script(const SceneBench& bench, const std::string& data_path, const std::string& png_path,
+                               ChartAxis axis = ChartAxis::Time);
 
 // Io when gnuplot cannot be run or fails; the PNG is not left half-written.
-Status write_bench_chart(const SceneBench& bench, const std::string& png_path);
+Status write_bench_chart(const SceneBench& bench, const std::string& png_path, ChartAxis axis = ChartAxis::Time);
 
 }  // namespace cmfilter::bench

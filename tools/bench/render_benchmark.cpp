@@ -14,6 +14,27 @@
 
 namespace cmfilter::bench {
 
+namespace {
+
+// BenchRow::driver_bytes of one material.
+std::size_t driver_bytes(const Material& m, RenderMethod method)
+{
+    const bool sampled = method == RenderMethod::Supersample || method == RenderMethod::Reference;
+    if (const auto* noise = std::get_if<NoiseDriver>(&m.driver))
+        return sampled ? 0 : noise->noise.table().sigmas().size() * sizeof(float);
+    const auto* texture = std::get_if<TextureDriver>(&m.driver);
+    if (!texture) return 0;
+    const double texels = static_cast<double>(texture->texture.width()) * texture->texture.height();
+    if (sampled) return static_cast<std::size_t>(texels * sizeof(float));
+    double channels = 2;
+    if (method == RenderMethod::Naive) channels = 1;
+    if (method == RenderMethod::Mixture) channels = 4;
+    if (method == RenderMethod::Exact) channels = static_cast<double>(texture->texture.distinct_values());
+    return static_cast<std::size_t>(channels * sizeof(float) * texels * 4 / 3);
+}
+
+}  // namespace
+
 std::string BenchConfiguration::label() const
 {
     switch (method) {
@@ -297,6 +318,7 @@ Expected<SceneBench> bench_scene(const Scene& scene, std::vector<Material>& mate
             if (auto st = choose_surface_tables(scene, materials, choice); !st) return st.error();
             baked = key;
         }
+        for (const Material& m : materials) row.driver_bytes += driver_bytes(m, c.method);
         if (tabled)
             for (std::size_t i = 0; i < materials.size(); ++i) {
                 const ColorLayer& m = table_layer(materials[i]);
@@ -347,7 +369,7 @@ std::string bench_csv(const std::vector<SceneBench>& benches)
     s.precision(6);
     s << "scene,configuration,method,spp,table_values,table_sigmas,spacing,footprint,table_bytes,seconds,"
          "mean,p95,max,near_mean,near_p95,middle_mean,middle_p95,horizon_mean,horizon_p95,"
-         "tolerance,table_error,shortcut,footprints,plain_footprints\n";
+         "tolerance,table_error,shortcut,footprints,plain_footprints,driver_bytes\n";
     auto errors = [&](const BandedError& e) {
         s << e.all.mean << "," << e.all.p95 << "," << e.all.max << "," << e.near.mean << "," << e.near.p95 << ","
           << e.middle.mean << "," << e.middle.p95 << "," << e.horizon.mean << "," << e.horizon.p95;
@@ -356,11 +378,11 @@ std::string bench_csv(const std::vector<SceneBench>& benches)
         s << b.scene << ",reference,"
           << "reference," << b.reference_samples << ",,,,,0," << b.reference_seconds << ",";
         errors(BandedError{});
-        s << ",,,,,\n";
+        s << ",,,,,,\n";
         s << b.scene << ",reference-repeat,"
           << "reference," << b.reference_samples << ",,,,,0," << b.reference_seconds << ",";
         errors(b.reference_repeatability);
-        s << ",,,,,\n";
+        s << ",,,,,,\n";
         for (const BenchRow& r : b.rows) {
             const BenchConfiguration& c = r.configuration;
             s << b.scene << "," << c.label() << "," << to_string(c.method) << "," << c.samples << ",";
@@ -374,10 +396,11 @@ std::string bench_csv(const std::vector<SceneBench>& benches)
                 s << ",";
                 if (c.tolerance > 0) s << c.tolerance << "," << r.table_error;
                 else s << ",";
-                s << "," << c.shortcut << "," << r.footprints << "," << r.plain_footprints << "\n";
+                s << "," << c.shortcut << "," << r.footprints << "," << r.plain_footprints << ",";
             } else {
-                s << ",,,,,\n";
+                s << ",,,,,,";
             }
+            s << r.driver_bytes << "\n";
         }
     }
     return s.str();

@@ -81,7 +81,14 @@ struct BenchRow {
     BenchConfiguration configuration;
     double seconds = 0;           // pixel loop, fastest of the repeats
     std::size_t table_bytes = 0;  // gaussian: float32 RGB tables of every surface
-    double table_error = 0;       // gaussian with a tolerance: the largest fitted table's lookup error (p99.9)
+    // What the method reads of every surface's driver, as stored (float32):
+    // a noise's sigma table (supersampling: nothing, it is procedural); a
+    // texture's pyramid of 1 (naive), 2 (gaussian) or 4 (mixture) channels,
+    // or of one weight per distinct value (exact), over its levels (4/3 of
+    // level 0), or level 0 alone (supersampling); microsurfaces: 0 (not
+    // counted).
+    std::size_t driver_bytes = 0;
+    double table_error = 0;  // gaussian with a tolerance: the largest fitted table's lookup error (p99.9)
     // gaussian: the tables' axes when every surface's agree (else values 0)
     int table_values = 0, table_sigmas = 0;
     SigmaSpacing spacing = SigmaSpacing::Sqrt;

@@ -53,13 +53,11 @@ SubFootprintPlan plan_sub_footprints(const FractalNoise& noise, double lod, cons
         }
         plan.blend = t;
     }
-    // Back to one Gaussian over the half LOD below lod_last.
-    const double top = (lod - (options.lod_last - kTopBlend)) / kTopBlend;
-    if (top > 0 && plan.cells > 1) {
-        plan.blend_cells = 1;
-        plan.blend = top;
-    }
     if (plan.blend <= 0) plan.blend_cells = plan.cells, plan.blend = 0;
+    // Back to one Gaussian over the half LOD below lod_last, whatever the
+    // counts blend there.
+    const double top = (lod - (options.lod_last - kTopBlend)) / kTopBlend;
+    if (top > 0) plan.one = top;
     return plan;
 }
 

@@ -7,7 +7,7 @@
 // spans from about the finest octave's period to a few base periods (the
 // transition), the partly resolved octaves make that distribution far from
 // one Gaussian: even each footprint's own exact mean and standard deviation
-// leave up to 3.7 mean CIEDE2000 for fBm (docs/noise-accuracy.md). Here the
+// leave up to 3.8 mean CIEDE2000 for fBm (docs/noise-accuracy.md). Here the
 // square footprint of width w centred at (x, y) is cut into n x n squares of
 // width w / n, each filtered as sec. 4.2 filters a footprint
 // (FilteredNoise::filter: its own filtered mean and the sigma table at its
@@ -42,7 +42,8 @@ inline constexpr int kMaxSubFootprintCells = 16;
 struct SubFootprintOptions {
     // The most squares per axis a footprint is cut into: 1 .. 16 (1: one
     // Gaussian, sec. 4.2). 8 by default: 64 Gaussians, where the errors of
-    // docs/noise-accuracy.md come within about 1.2 at every LOD up to 2.
+    // docs/noise-accuracy.md for fBm come within 1.35 at every LOD up to 2
+    // (within 1.0 up to LOD -1).
     int max_cells = 8;
     // From this LOD one Gaussian again (finite).
     double lod_last = 3.0;
@@ -52,11 +53,14 @@ struct SubFootprintOptions {
 Status check_sub_footprint_options(const SubFootprintOptions& options);
 
 // The estimate at one LOD: (1 - blend) of the mixture over cells x cells
-// squares plus blend of the one over blend_cells x blend_cells.
+// squares plus blend of the one over blend_cells x blend_cells, and that
+// (1 - one) of the whole plus `one` of the single Gaussian (the blend back
+// to one Gaussian below lod_last).
 struct SubFootprintPlan {
     int cells = 1;
     int blend_cells = 1;
     double blend = 0;  // in [0, 1)
+    double one = 0;    // in [0, 1)
 };
 
 // The plan for footprints of LOD `lod` of `noise` (see above); a NaN or
@@ -93,6 +97,7 @@ Colour sub_footprint_color(const FilteredNoise& noise, double x, double y, doubl
     };
     Colour c = mixture(plan.cells);
     if (plan.blend > 0) c = (1.0 - plan.blend) * c + plan.blend * mixture(plan.blend_cells);
+    if (plan.one > 0) c = (1.0 - plan.one) * c + plan.one * Colour(colour(whole));
     return c;
 }
 

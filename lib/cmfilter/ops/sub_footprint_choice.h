@@ -5,7 +5,9 @@
 // of width p_0 2^L at `footprints` centres uniform over [0, 256 p_0)^2 are
 // coloured by the mixture with each candidate's max_cells (1: sec. 4.2's one
 // Gaussian) through the material's colour of a Gaussian (its table lookup,
-// as the renderer makes it), and compared with the reference,
+// as the renderer makes it for each square; the renderer's small-sigma
+// shortcut of a whole footprint is not applied here), and compared with the
+// reference,
 // the mean of C0(f) over strata x strata jittered-stratified points of the
 // footprint; the error at L is the mean CIEDE2000 over the footprints, a
 // candidate's error overall the worst over the LODs. Candidates are tried

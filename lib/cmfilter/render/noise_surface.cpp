@@ -72,8 +72,12 @@ private:
         if (method_ == RenderMethod::Naive) return color_.map.evaluate(f.mean);
         if (method_ != RenderMethod::Mixture || f.sigma < color_.plain.below(f.mean))
             return gaussian_albedo(color_, f.mean, f.sigma, counts);
+        // The footprint counts once (as a footprint coloured by a table),
+        // not once per square.
+        ++counts.footprints;
+        AlbedoCounts squares;
         return sub_footprint_color<Rgb>(noise_, u, v, w, f, squares_, [&](const FilteredNoise::Parameters& p) {
-            return gaussian_albedo(color_, p.mean, p.sigma, counts);
+            return gaussian_albedo(color_, p.mean, p.sigma, squares);
         });
     }
 

@@ -121,6 +121,20 @@ TEST_CASE("the colour is continuous across every change of the number of squares
         INFO("LOD " << lod << ": jump " << jump << ", the counts differ by " << without_blend);
         CHECK(jump < 1e-6);
     }
+    // A lod_last whose half LOD of return to one Gaussian holds a change of
+    // count (4 -> 8 at s = 2) and its blend (from s = 1.75).
+    SubFootprintOptions early;
+    early.lod_last = lod_of_level(2) + 0.1;
+    for (double lod : {early.lod_last - 0.5, lod_of_level(1.75), lod_of_level(2), early.lod_last}) {
+        double jump = 0;
+        for (int j = 0; j < 8; ++j) {
+            const double x = 3.7 + 11.1 * j, y = 0.9 + 5.3 * j;
+            jump = std::max(jump, max_abs_diff(mixture(x, y, p0 * std::exp2(lod - 1e-9), early),
+                                               mixture(x, y, p0 * std::exp2(lod + 1e-9), early)));
+        }
+        INFO("lod_last " << early.lod_last << ", LOD " << lod << ": jump " << jump);
+        CHECK(jump < 1e-6);
+    }
 }
 
 TEST_CASE("the plan doubles the squares every 1.5 LOD from 2.5 below the finest octave, up to max_cells")
@@ -147,8 +161,8 @@ TEST_CASE("the plan doubles the squares every 1.5 LOD from 2.5 below the finest 
     // Over the half LOD below lod_last: back to one.
     const SubFootprintPlan top = plan_sub_footprints(n, 2.75, {});
     CHECK(top.cells == 8);
-    CHECK(top.blend_cells == 1);
-    CHECK(top.blend == doctest::Approx(0.5));
+    CHECK(top.blend == 0);
+    CHECK(top.one == doctest::Approx(0.5));
     CHECK(plan_sub_footprints(n, NAN, {}).cells == 1);
     CHECK(plan_sub_footprints(n, -INFINITY, {}).cells == 1);
 }
