@@ -39,7 +39,7 @@ cmfilter_json_case(render "" ${CMF} render ${SC}/good.json --method gaussian -o 
                    --aov ${JOUT}/render-aov)
 cmfilter_json_case(render-auto "" ${CMF} render ${SCB}/texture-auto.json --method auto --tolerance 100
                    --measure-lods 1 -o ${JOUT}/render-auto.exr)
-cmfilter_json_case(render-auto-noise "" ${CMF} render ${SC}/good.json --method auto --tolerance 100
+cmfilter_json_case(render-auto-noise "" ${CMF} render ${SCB}/noise-auto.json --method auto --tolerance 100
                    --measure-lods 0 -o ${JOUT}/render-auto-noise.exr)
 cmfilter_json_case(render-mixture-noise "" ${CMF} render ${SC}/good.json --method mixture --sub-footprints 2
                    -o ${JOUT}/render-mixture-noise.exr)

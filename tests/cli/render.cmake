@@ -279,7 +279,7 @@ cmfilter_cli_case(NAME render.bad.sub-footprints EXIT 3 STDERR "--sub-footprints
 cmfilter_cli_case(NAME render.auto-noise-records EXIT 0
                   STDOUT "surface 0: gaussian \\(one square\\).*cmfilter:noise_sub_footprints: \"0: 1\""
                   COMMAND bash -c "set -o pipefail && ($0 render $1 --method auto --tolerance 100 --measure-lods 0 -o $2 && oiiotool --info -v $2) | tr '\\n' ' '"
-                          ${CMF} ${SC}/good.json ${OUT}/render-auto-noise.exr)
+                          ${CMF} ${SCB}/noise-auto.json ${OUT}/render-auto-noise.exr)
 cmfilter_cli_case(NAME render.bad.auto-noise-none-meets EXIT 3
-                  STDERR "surface 0 \\(.*good\\.json\\): no number of sub-footprints meets --tolerance 0\\.01 \\(mean CIEDE2000 at every LOD 0 of its noise\\): the closest, up to [0-9]+ x [0-9]+ squares, is [0-9.]+ at LOD 0"
-                  ABSENT ${RO} COMMAND ${CMF} render ${SC}/good.json --method auto --tolerance 0.01 --measure-lods 0 -o ${RO})
+                  STDERR "surface 0 \\(.*noise-auto\\.json\\): no number of sub-footprints meets --tolerance 0\\.1 \\(mean CIEDE2000 at every LOD 0 of its noise\\): the closest, up to [0-9]+ x [0-9]+ squares, is [0-9.]+ at LOD 0"
+                  ABSENT ${RO} COMMAND ${CMF} render ${SCB}/noise-auto.json --method auto --tolerance 0.1 --measure-lods 0 -o ${RO})
