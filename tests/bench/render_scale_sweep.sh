@@ -25,28 +25,6 @@ configurations="naive,gaussian 256x256 sqrt,mixture,supersample 16"
 plane_scales="1 2 4 8 16 32 64 128"
 sphere_scales="0.0078125 0.015625 0.03125 0.0625 0.125 0.25 0.5 1"
 
-# A scene file with absolute paths and its mapping scaled by $3.
-scaled_scene() {
-  python3 - "$1" "$2" "$3" "$scenes" <<'EOF'
-import json, os, sys
-source, target, scale, folder = sys.argv[1], sys.argv[2], float(sys.argv[3]), sys.argv[4]
-scene = json.load(open(source))
-for surface in scene["surfaces"]:
-    mapping = surface["mapping"]
-    if mapping["type"] == "planar":
-        mapping["u_axis"] = [scale * x for x in mapping["u_axis"]]
-        mapping["v_axis"] = [scale * x for x in mapping["v_axis"]]
-    else:
-        mapping["u_scale"] *= scale
-        mapping["v_scale"] *= scale
-    material = surface["material"]
-    for part, key in (("colormap", "image"), ("colormap", "table"), ("driver", "sigma_table"),
-                      ("driver", "image"), ("driver", "moments")):
-        if key in material[part]:
-            material[part][key] = os.path.normpath(os.path.join(folder, material[part][key]))
-json.dump(scene, open(target, "w"), indent=1)
-EOF
-}
 
 out="$work/scale-sweep.csv"
 runs=()
@@ -55,7 +33,7 @@ for base in plane-fbm-terrain sphere-fbm-far; do
   [[ $base == sphere-* ]] && size=$sphere_size scales=$sphere_scales
   for scale in $scales; do
     scene="$work/$base-x$scale.json"
-    scaled_scene "$scenes/$base.json" "$scene" "$scale"
+    python3 "$root/tests/bench/scaled_scene.py" "$scenes/$base.json" "$scene" "$scale"
     "$cmfilter" bench "$scene" --csv "$work/$base-x$scale.csv" --only "$configurations" --resolution "$size" \
                 --repeats 1 --threads "$threads" -q
     runs+=("$base" "$scale" "$work/$base-x$scale.csv")

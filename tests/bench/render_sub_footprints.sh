@@ -3,8 +3,8 @@
 # Speed against accuracy of mixture's sub-footprints for a noise in renders
 # (docs/render.md, "Noise in the transition: sub-footprints"): the bundled
 # terrain ground plane with its fBm made 1, 4, 16 and 64 times finer
-# (render_scale_sweep.sh's scaling), gaussian (256 x 256 sqrt table) and
-# mixture with up to 2 x 2, 4 x 4, 8 x 8 and 16 x 16 squares per footprint
+# (scaled_scene.py, as render_scale_sweep.sh scales it), gaussian (256 x 256
+# sqrt table) and mixture with up to 2 x 2, 4 x 4, 8 x 8 and 16 x 16 squares per footprint
 # (--sub-footprints), one thread, fastest of 3 runs, against a reference
 # grown until repeatable (cmfilter bench). Writes WORK_DIR/sub-footprints.csv
 # (scale, sub_footprints, then bench's columns), copies it to
@@ -22,20 +22,7 @@ cmfilter="$build/tools/cmfilter"
 runs=()
 for scale in 1 4 16 64; do
   scene="$work/plane-x$scale.json"
-  python3 - "$root/examples/scenes/plane-fbm-terrain.json" "$scene" "$scale" "$root/examples/scenes" <<'PY'
-import json, os, sys
-source, target, scale, folder = sys.argv[1], sys.argv[2], float(sys.argv[3]), sys.argv[4]
-scene = json.load(open(source))
-for surface in scene["surfaces"]:
-    mapping = surface["mapping"]
-    mapping["u_axis"] = [scale * x for x in mapping["u_axis"]]
-    mapping["v_axis"] = [scale * x for x in mapping["v_axis"]]
-    material = surface["material"]
-    for part, key in (("colormap", "image"), ("colormap", "table"), ("driver", "sigma_table")):
-        if key in material[part]:
-            material[part][key] = os.path.normpath(os.path.join(folder, material[part][key]))
-json.dump(scene, open(target, "w"), indent=1)
-PY
+  python3 "$root/tests/bench/scaled_scene.py" "$root/examples/scenes/plane-fbm-terrain.json" "$scene" "$scale"
   for n in 2 4 8 16; do
     "$cmfilter" bench "$scene" --csv "$work/x$scale-n$n.csv" --only "gaussian 256x256 sqrt,mixture" \
                 --resolution "$size" --repeats 3 --threads 1 --sub-footprints "$n" \
