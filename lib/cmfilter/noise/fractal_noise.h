@@ -72,6 +72,7 @@ public:
     // The unweighted term of octave i: n or |n| at the octave's point.
     double octave(int i, double x, double y) const;
     double octave_period(int i) const { return periods_[static_cast<std::size_t>(i)]; }
+    double octave_log2_period(int i) const { return log2_periods_[static_cast<std::size_t>(i)]; }
     double octave_amplitude(int i) const { return amplitudes_[static_cast<std::size_t>(i)]; }
     // What an octave fades to: the base mean (fBm) or mean |n| (turbulence).
     double octave_mean() const;

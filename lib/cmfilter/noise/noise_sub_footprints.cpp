@@ -35,8 +35,8 @@ SubFootprintPlan plan_sub_footprints(const FractalNoise& noise, double lod, cons
 {
     SubFootprintPlan plan;
     if (!std::isfinite(lod) || options.max_cells <= 1 || lod >= options.lod_last) return plan;
-    const int octaves = noise.options().octaves;
-    const double finest = std::log2(noise.octave_period(octaves - 1) / noise.base_period());
+    // L_N from the octaves' stored log2 periods: no log2 per footprint.
+    const double finest = noise.octave_log2_period(noise.options().octaves - 1) - noise.octave_log2_period(0);
     const double s = (lod - finest + kLodsBelowFinest) / kLodsPerDoubling;
     if (s <= -kLevelBlend) return plan;
     // n = 2^ceil(s); over the last quarter of the level, towards 2n.
