@@ -17,6 +17,7 @@
 #include "cmfilter/ops/sub_footprint_choice.h"
 #include "cmfilter/render/pixel_region.h"
 #include "cmfilter/render/render_options.h"
+#include "cmfilter/render/surface_lods.h"
 #include "cmfilter/scene/material.h"
 #include "cmfilter/scene/scene.h"
 #include "cmfilter/synthesis/sample_analysis.h"
@@ -201,15 +202,18 @@ RenderMethod render_method_of(FilterMethod method);
 // render --method auto (render_method_choice.cpp): each noise surface's
 // fewest sub-footprints for the tolerance (ops/sub_footprint_choice.h:
 // measured on its noise, colour map and table against supersampling, at
-// `lods` (log2 of the width over the base period; empty: every integer LOD
-// of its sigma table)); BadInput naming the surface when none meets it.
+// `lods` (log2 of the width over the base period); without `lods`, at the
+// integer LODs that cover the view's footprints on the surface (`view`, by
+// surface: survey_surface_lods), a surface no pixel sees not measured; with
+// neither, every integer LOD of its sigma table); BadInput naming the
+// surface when none meets it.
 struct SurfaceSubFootprintChoice {
     std::size_t surface = 0;
     SubFootprintChoice choice;
 };
 Expected<std::vector<SurfaceSubFootprintChoice>>
 choose_noise_sub_footprints(const Scene& scene, const std::vector<Material>& materials, double tolerance,
-                            const std::vector<double>& lods, int threads);
+                            const std::vector<double>& lods, const std::vector<SurfaceLodRange>* view, int threads);
 nlohmann::json sub_footprint_choice_json(const SubFootprintChoice& choice);
 void print_sub_footprint_choice(std::ostream& out, const SubFootprintChoice& choice);
 

@@ -18,6 +18,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -200,6 +201,20 @@ Status run(const RenderArgs& args)
     if (talk) material_options.note = [](const std::string& line) { std::cerr << "render: " << line << "\n"; };
     auto materials = prepare_materials(*scene, *config, material_options);
     if (!materials) return materials.error();
+    RenderOptions options;
+    options.method = *method;
+    options.samples = args.samples;
+    options.seed = args.seed;
+    options.threads = args.threads;
+    options.footprint = *footprint;
+    if (auto st = check_render_probes(args.probes); !st) return st;
+    options.max_probes = args.probes;
+    options.sub_footprints.max_cells = args.sub_footprints;
+    options.edge_coverage = !args.no_edge_coverage;
+    options.masking = args.masking == "correlated" ? MaskingShadowing::DirectionCorrelated
+                                                   : MaskingShadowing::Uncorrelated;
+    options.slope_shading = args.slope_shading == "correlated" ? SlopeShading::Correlated : SlopeShading::Uncorrelated;
+    options.region = region;
     std::vector<SurfaceMethodChoice> choices;
     std::vector<RenderMethod> texture_methods;
     std::vector<SurfaceSubFootprintChoice> noise_choices;
@@ -229,8 +244,22 @@ Status run(const RenderArgs& args)
         }
         if (talk)
             std::cerr << "render: measuring each noise's sub-footprints for --tolerance " << *args.tolerance << "\n";
-        auto squares =
-            choose_noise_sub_footprints(*scene, *materials, *args.tolerance, args.measure_lods, args.threads);
+        // Without --measure-lods, each noise is measured at the LODs the
+        // view reaches on it: the whole frame's centre rays, surveyed first.
+        std::optional<std::vector<SurfaceLodRange>> view;
+        const bool noises = std::any_of(materials->begin(), materials->end(),
+                                        [](const Material& m) { return has_noise_driver(m) && !is_microsurface(m); });
+        if (args.measure_lods.empty() && noises) {
+            auto seen = survey_surface_lods(*scene, *materials, options);
+            if (!seen) return seen.error();
+            view = std::move(*seen);
+            for (std::size_t i = 0; i < view->size(); ++i)
+                if (talk && (*view)[i].pixels == 0 && has_noise_driver((*materials)[i]) &&
+                    !is_microsurface((*materials)[i]))
+                    std::cerr << "render: surface " << i << ": no pixel sees it; its noise is not measured\n";
+        }
+        auto squares = choose_noise_sub_footprints(*scene, *materials, *args.tolerance, args.measure_lods,
+                                                   view ? &*view : nullptr, args.threads);
         if (!squares) return squares.error();
         noise_choices = std::move(*squares);
         noise_sub_footprints.assign(materials->size(), 0);
@@ -238,20 +267,6 @@ Status run(const RenderArgs& args)
             noise_sub_footprints[c.surface] = c.choice.choice()->max_cells;
     }
 
-    RenderOptions options;
-    options.method = *method;
-    options.samples = args.samples;
-    options.seed = args.seed;
-    options.threads = args.threads;
-    options.footprint = *footprint;
-    if (auto st = check_render_probes(args.probes); !st) return st;
-    options.max_probes = args.probes;
-    options.sub_footprints.max_cells = args.sub_footprints;
-    options.edge_coverage = !args.no_edge_coverage;
-    options.masking = args.masking == "correlated" ? MaskingShadowing::DirectionCorrelated
-                                                   : MaskingShadowing::Uncorrelated;
-    options.slope_shading = args.slope_shading == "correlated" ? SlopeShading::Correlated : SlopeShading::Uncorrelated;
-    options.region = region;
     options.texture_methods = texture_methods;
     options.noise_sub_footprints = noise_sub_footprints;
     if (talk && isatty(STDERR_FILENO)) options.progress = terminal_progress("render");

@@ -108,7 +108,7 @@ Expected<std::vector<SurfaceMethodChoice>> choose_texture_methods(const Scene& s
 
 Expected<std::vector<SurfaceSubFootprintChoice>>
 choose_noise_sub_footprints(const Scene& scene, const std::vector<Material>& materials, double tolerance,
-                            const std::vector<double>& lods, int threads)
+                            const std::vector<double>& lods, const std::vector<SurfaceLodRange>* view, int threads)
 {
     std::vector<SurfaceSubFootprintChoice> out;
     for (std::size_t i = 0; i < materials.size(); ++i) {
@@ -119,6 +119,11 @@ choose_noise_sub_footprints(const Scene& scene, const std::vector<Material>& mat
         SubFootprintChoiceOptions o;
         o.tolerance = tolerance;
         o.lods = lods;
+        if (lods.empty() && view && i < view->size()) {
+            const SurfaceLodRange& seen = (*view)[i];
+            if (seen.pixels == 0) continue;  // no pixel needs it
+            o.lods = sub_footprint_lods_between(noise->noise.table(), seen.first, seen.last);
+        }
         o.threads = threads;
         const ColorLayer& layer = m.color;
         auto choice = choose_sub_footprints(
@@ -133,9 +138,10 @@ choose_noise_sub_footprints(const Scene& scene, const std::vector<Material>& mat
             const SubFootprintTrial* best = choice->best();
             std::ostringstream msg;
             msg << surface << ": no number of sub-footprints meets --tolerance " << tolerance
-                << " (mean CIEDE2000 at every LOD " << lod_list_text(choice->lods)
-                << " of its noise): the closest, up to " << best->max_cells << " x " << best->max_cells
-                << " squares, is " << best->worst << " at LOD " << best->worst_lod;
+                << " (mean CIEDE2000 at every LOD " << lod_list_text(choice->lods) << " of its noise"
+                << (lods.empty() && view ? ", those its pixels reach" : "") << "): the closest, up to "
+                << best->max_cells << " x " << best->max_cells << " squares, is " << best->worst << " at LOD "
+                << best->worst_lod;
             return bad_input(msg.str());
         }
         out.push_back({i, std::move(*choice)});

@@ -14,6 +14,18 @@
 //                  without the errors of the filtered mean and of the sigma table;
 //   mean-oracle-2048  T(m, sigma): the footprint's own mean with the table's
 //                  sigma: what exact footprint means would leave;
+//   shape-table    C averaged over the noise's own residual distribution at
+//                  the LOD: mean + r, r = f(p) - mean_over_footprint for
+//                  points p of 8192 other footprints of the same width
+//                  (16 jittered points each, a 128-bin histogram): what a
+//                  table T_L(mean) would give whose kernel is the noise's
+//                  measured one instead of a Gaussian, one lookup per
+//                  footprint;
+//   conditional-table  the same with r's distribution among the footprints
+//                  whose filtered mean falls in the same one of 32 bins
+//                  (bins with under 256 samples take the whole): a table of
+//                  E[C | filtered mean] per LOD, the best any one lookup
+//                  from the filtered mean can do up to its sampling;
 //   mixture        the mixture of Gaussians over sub-footprints
 //                  (noise_sub_footprints.h, default options: up to 8 x 8)
 //                  with the 256-value table; mixture-2048 the same with the
@@ -69,9 +81,89 @@ struct Map {
     GaussianColorTable table, table2048;
 };
 
-const char* const kMethods[] = {"gaussian",         "gaussian-2048", "naive",        "oracle-2048",
-                                "mean-oracle-2048", "mixture",       "mixture-2048", "mixture-4"};
-constexpr int kMethodCount = 8;
+const char* const kMethods[] = {"gaussian",    "gaussian-2048",     "naive",   "oracle-2048",  "mean-oracle-2048",
+                                "shape-table", "conditional-table", "mixture", "mixture-2048", "mixture-4"};
+constexpr int kMethodCount = 10;
+
+// The residual r = f(p) - mean_over_footprint of a noise over footprints of
+// one width (see shape-table and conditional-table above).
+constexpr int kResidualFootprints = 8192, kResidualStrata = 4, kResidualBins = 128;
+constexpr int kMeanBins = 32, kMinBinSamples = 256;
+
+struct ResidualHistogram {
+    std::vector<double> value, weight;
+};
+
+struct ResidualDistribution {
+    ResidualHistogram all;
+    std::vector<ResidualHistogram> by_mean;  // empty where too few samples
+    double mean_first = 0, mean_step = 1;
+
+    const ResidualHistogram& given(double mean) const
+    {
+        const int i = std::clamp(static_cast<int>(std::floor((mean - mean_first) / mean_step)), 0, kMeanBins - 1);
+        const ResidualHistogram& h = by_mean[static_cast<std::size_t>(i)];
+        return h.value.empty() ? all : h;
+    }
+};
+
+ResidualHistogram histogram(const std::vector<double>& r, double first, double last)
+{
+    const double step = (last - first) / kResidualBins;
+    std::vector<double> count(kResidualBins);
+    for (double v : r)
+        count[static_cast<std::size_t>(
+            std::clamp(static_cast<int>(step > 0 ? (v - first) / step : 0), 0, kResidualBins - 1))] += 1;
+    ResidualHistogram h;
+    for (int i = 0; i < kResidualBins; ++i)
+        if (count[static_cast<std::size_t>(i)] > 0) {
+            h.value.push_back(first + (i + 0.5) * step);
+            h.weight.push_back(count[static_cast<std::size_t>(i)] / static_cast<double>(r.size()));
+        }
+    return h;
+}
+
+// Footprints centred in [3000 p_0, 3256 p_0)^2, away from the measured ones.
+ResidualDistribution measure_residuals(const FractalNoise& noise, double w, std::uint64_t seed)
+{
+    const double p0 = noise.base_period();
+    std::uint64_t state = seed ^ 0x5eedull;
+    std::vector<double> means, residuals;
+    for (int q = 0; q < kResidualFootprints; ++q) {
+        const double cx = p0 * (3000 + 256 * unit_interval(splitmix64(state)));
+        const double cy = p0 * (3000 + 256 * unit_interval(splitmix64(state)));
+        const double m = noise.mean_over_footprint(cx, cy, w);
+        for (int a = 0; a < kResidualStrata; ++a)
+            for (int b = 0; b < kResidualStrata; ++b) {
+                const double x = cx + w * ((a + unit_interval(splitmix64(state))) / kResidualStrata - 0.5);
+                const double y = cy + w * ((b + unit_interval(splitmix64(state))) / kResidualStrata - 0.5);
+                means.push_back(m);
+                residuals.push_back(noise(x, y) - m);
+            }
+    }
+    const auto [rmin, rmax] = std::minmax_element(residuals.begin(), residuals.end());
+    const auto [mmin, mmax] = std::minmax_element(means.begin(), means.end());
+    ResidualDistribution d;
+    d.all = histogram(residuals, *rmin, *rmax);
+    d.mean_first = *mmin;
+    d.mean_step = *mmax > *mmin ? (*mmax - *mmin) / kMeanBins : 1.0;
+    std::vector<std::vector<double>> per_bin(kMeanBins);
+    for (std::size_t i = 0; i < means.size(); ++i)
+        per_bin[static_cast<std::size_t>(
+                    std::clamp(static_cast<int>((means[i] - d.mean_first) / d.mean_step), 0, kMeanBins - 1))]
+            .push_back(residuals[i]);
+    for (const auto& r : per_bin)
+        d.by_mean.push_back(static_cast<int>(r.size()) >= kMinBinSamples ? histogram(r, *rmin, *rmax)
+                                                                         : ResidualHistogram{});
+    return d;
+}
+
+Rgb colour_through(const ColorMap& map, double mean, const ResidualHistogram& h)
+{
+    Rgb c;
+    for (std::size_t i = 0; i < h.value.size(); ++i) c += h.weight[i] * map.evaluate(mean + h.value[i]);
+    return c;
+}
 
 }  // namespace
 
@@ -148,6 +240,7 @@ int main(int argc, char** argv)
     for (int k = 0; k < lods; ++k) {
         const double lod = lod_first + k * kLodStep, w = p0 * std::exp2(lod);
         const double sigma = filtered.unresolved_sigma(w);
+        const ResidualDistribution residuals = measure_residuals(*noise, w, static_cast<std::uint64_t>(k));
         // errors[(map * kMethodCount + method) * points + footprint]
         std::vector<double> errors(map_count * kMethodCount * static_cast<std::size_t>(points));
         parallel_for(points, threads, [&](int j) {
@@ -184,6 +277,8 @@ int main(int argc, char** argv)
                                                      maps[m].map.evaluate(mean),
                                                      maps[m].table2048.lookup(sample_mean, sample_sigma),
                                                      maps[m].table2048.lookup(sample_mean, sigma),
+                                                     colour_through(maps[m].map, mean, residuals.all),
+                                                     colour_through(maps[m].map, mean, residuals.given(mean)),
                                                      mixture(maps[m].table, {}),
                                                      mixture(maps[m].table2048, {}),
                                                      mixture(maps[m].table, four)};

@@ -9,7 +9,8 @@
 # Writes WORK/noise-accuracy.csv (noise,map,lod,width,method,mean,p95,max),
 # copies it to docs/data/, and draws docs/images/noise-accuracy-{fbm,turbulence}.png
 # and docs/images/noise-accuracy-mixture.png (the worst map's mean error per
-# LOD for each method: one Gaussian, sub-footprints, the oracle).
+# LOD for each method: one Gaussian, sub-footprints, the oracle, the best
+# one-lookup table).
 #
 #   bash tests/bench/noise_accuracy.sh BUILD_DIR WORK_DIR [P]
 set -euo pipefail
@@ -68,6 +69,7 @@ for (noise, method, lod), value in sorted(worst.items()):
         f.write(f"{lod} {value}\n")
 EOF
 series=("gaussian-2048:7:blue:gaussian (2048 values)" "oracle-2048:4:gray:oracle: own mean and sd, one Gaussian"
+        "conditional-table:13:dark-green:one lookup at best: E[C | filtered mean] per LOD"
         "mixture-4:9:orange:mixture, up to 4 x 4" "mixture:5:brown:mixture, up to 8 x 8 (256 values)"
         "mixture-2048:5:red:mixture, up to 8 x 8 (2048 values)")
 {

@@ -280,6 +280,16 @@ cmfilter_cli_case(NAME render.auto-noise-records EXIT 0
                   STDOUT "surface 0: gaussian \\(one square\\).*cmfilter:noise_sub_footprints: \"0: 1\""
                   COMMAND bash -c "set -o pipefail && ($0 render $1 --method auto --tolerance 100 --measure-lods 0 -o $2 && oiiotool --info -v $2) | tr '\\n' ' '"
                           ${CMF} ${SCB}/noise-auto.json ${OUT}/render-auto-noise.exr)
+# Without --measure-lods a noise is measured at the LODs its pixels reach.
+# Straight down from height 2, 30 degrees over 32 pixels, 4 noise units (base
+# periods of the gradient fBm) to a scene unit, one probe a pixel: every
+# footprint is 4 * 2 * 2 tan(15 deg) / 32 = 0.134 base periods, LOD -2.90, so
+# LODs -3 and -2; the sphere behind the camera is not measured.
+cmfilter_cli_case(NAME render.auto-noise-view-lods EXIT 0
+                  STDOUT "surface 0: .*at LOD -3, -2:\n"
+                  STDERR "surface 1: no pixel sees it; its noise is not measured"
+                  COMMAND ${CMF} render ${SCB}/noise-auto-down.json --method auto --tolerance 100 --probes 1
+                          -o ${OUT}/render-auto-noise-down.exr)
 cmfilter_cli_case(NAME render.bad.auto-noise-none-meets EXIT 3
                   STDERR "surface 0 \\(.*noise-auto\\.json\\): no number of sub-footprints meets --tolerance 0\\.1 \\(mean CIEDE2000 at every LOD 0 of its noise\\): the closest, up to [0-9]+ x [0-9]+ squares, is [0-9.]+ at LOD 0"
                   ABSENT ${RO} COMMAND ${CMF} render ${SCB}/noise-auto.json --method auto --tolerance 0.1 --measure-lods 0 -o ${RO})

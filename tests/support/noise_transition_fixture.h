@@ -8,6 +8,7 @@
 #include "cmfilter/colormap/color_map.h"
 #include "cmfilter/noise/filtered_noise.h"
 #include "cmfilter/noise/noise_sigma_bake.h"
+#include "cmfilter/noise/noise_sub_footprints.h"
 #include "cmfilter/noise/noise_spec.h"
 
 #include <doctest/doctest.h>
@@ -54,19 +55,29 @@ inline const NoiseTransitionFixture& noise_transition_fixture()
     return f;
 }
 
-// The reference colour of the square footprint of width w at (x, y): the
-// mean of C0 of the noise itself at strata x strata jittered-stratified
-// points, drawn from rng.
+// The reference colour of the footprint with edges e centred at (x, y) (the
+// points (x, y) + s e1 + t e2, s and t in [-1/2, 1/2]): the mean of C0 of the
+// noise itself at strata x strata jittered-stratified points in (s, t),
+// drawn from rng.
 template <class Rng>
-cmfilter::Rgb supersampled_colour(const NoiseTransitionFixture& f, double x, double y, double w, int strata, Rng& rng)
+cmfilter::Rgb supersampled_colour(const NoiseTransitionFixture& f, double x, double y,
+                                  const cmfilter::FootprintEdges& e, int strata, Rng& rng)
 {
     std::uniform_real_distribution<double> u(0, 1);
     cmfilter::Rgb sum;
     for (int a = 0; a < strata; ++a)
-        for (int b = 0; b < strata; ++b)
-            sum += f.map.evaluate(
-                f.noise.noise()(x + w * ((a + u(rng)) / strata - 0.5), y + w * ((b + u(rng)) / strata - 0.5)));
+        for (int b = 0; b < strata; ++b) {
+            const double s = (a + u(rng)) / strata - 0.5, t = (b + u(rng)) / strata - 0.5;
+            sum += f.map.evaluate(f.noise.noise()(x + s * e.e1x + t * e.e2x, y + s * e.e1y + t * e.e2y));
+        }
     return (1.0 / (static_cast<double>(strata) * strata)) * sum;
+}
+
+// The same over the square footprint of width w.
+template <class Rng>
+cmfilter::Rgb supersampled_colour(const NoiseTransitionFixture& f, double x, double y, double w, int strata, Rng& rng)
+{
+    return supersampled_colour(f, x, y, cmfilter::FootprintEdges::square(w), strata, rng);
 }
 
 }  // namespace cmfilter_test

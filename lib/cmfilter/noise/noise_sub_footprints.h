@@ -9,7 +9,7 @@
 // one Gaussian: even each footprint's own exact mean and standard deviation
 // leave up to 3.8 mean CIEDE2000 for fBm (docs/noise-accuracy.md). Here the
 // square footprint of width w centred at (x, y) is cut into n x n squares of
-// width w / n, each filtered as sec. 4.2 filters a footprint
+// width w / n (a parallelogram footprint, along its own edges), each filtered as sec. 4.2 filters a footprint
 // (FilteredNoise::filter: its own filtered mean and the sigma table at its
 // LOD), and the colour is the mean of their colours:
 //     C(x, y, w) = (1 / n^2) sum_{a,b} T(mean_{w/n}(x_ab, y_ab), sigma(w / n)),
@@ -67,38 +67,72 @@ struct SubFootprintPlan {
 // infinite LOD (a point, or no footprint) gets one Gaussian.
 SubFootprintPlan plan_sub_footprints(const FractalNoise& noise, double lod, const SubFootprintOptions& options);
 
-// The colour of the square footprint of width w at (x, y) as the mixture over
-// n x n sub-footprints (n >= 2): colour(parameters) is called with each
-// square's FilteredNoise::Parameters and returns its colour (any type with +=
+// A footprint's parallelogram in noise coordinates: the points
+// c + s e1 + t e2, s and t in [-1/2, 1/2] (a pixel's footprint, or one
+// anisotropic probe's piece of it). The square of width w is
+// {w, 0, 0, w}.
+struct FootprintEdges {
+    double e1x = 0, e1y = 0, e2x = 0, e2y = 0;
+    static FootprintEdges square(double w) { return {w, 0, 0, w}; }
+};
+
+// The colour of the footprint at (x, y) with edges e and width w (the one
+// width its Gaussian is filtered at) as the mixture over n x n
+// sub-footprints (n >= 2): the parallelogram cut along its own edges, so the
+// pieces tile the region the footprint covers whatever its orientation;
+// each piece filtered at width w / n. colour(parameters) is called with each
+// piece's FilteredNoise::Parameters and returns its colour (any type with +=
 // and scalar *, e.g. Rgb).
 template <class Colour, class ColourOf>
-Colour sub_footprint_mixture(const FilteredNoise& noise, double x, double y, double w, int n, ColourOf&& colour)
+Colour sub_footprint_mixture(const FilteredNoise& noise, double x, double y, double w, const FootprintEdges& e, int n,
+                             ColourOf&& colour)
 {
     const double cell = w / n;
     Colour sum{};
     for (int a = 0; a < n; ++a) {
-        const double xa = x + cell * (a + 0.5) - 0.5 * w;
-        for (int b = 0; b < n; ++b) sum += colour(noise.filter(xa, y + cell * (b + 0.5) - 0.5 * w, cell));
+        const double s = (a + 0.5) / n - 0.5;
+        for (int b = 0; b < n; ++b) {
+            const double t = (b + 0.5) / n - 0.5;
+            sum += colour(noise.filter(x + s * e.e1x + t * e.e2x, y + s * e.e1y + t * e.e2y, cell));
+        }
     }
     return (1.0 / (static_cast<double>(n) * n)) * sum;
 }
 
+// The same over the axis-aligned square of width w centred at (x, y): the
+// squares of width w / n centred at
+//     x_ab = x + w ((a + 1/2) / n - 1/2),  y_ab = y + w ((b + 1/2) / n - 1/2).
+template <class Colour, class ColourOf>
+Colour sub_footprint_mixture(const FilteredNoise& noise, double x, double y, double w, int n, ColourOf&& colour)
+{
+    return sub_footprint_mixture<Colour>(noise, x, y, w, FootprintEdges::square(w), n, colour);
+}
+
 // The colour of a footprint as its plan says (one or two mixtures, blended);
 // `whole` is noise.filter(x, y, w), the one Gaussian's parameters, which the
-// caller has already.
+// caller has already; e the footprint's edges (its square of width w
+// by default).
 template <class Colour, class ColourOf>
-Colour sub_footprint_color(const FilteredNoise& noise, double x, double y, double w,
+Colour sub_footprint_color(const FilteredNoise& noise, double x, double y, double w, const FootprintEdges& e,
                            const FilteredNoise::Parameters& whole, const SubFootprintOptions& options,
                            ColourOf&& colour)
 {
     const SubFootprintPlan plan = plan_sub_footprints(noise.noise(), w > 0 ? noise.lod(w) : NAN, options);
     const auto mixture = [&](int n) {
-        return n > 1 ? sub_footprint_mixture<Colour>(noise, x, y, w, n, colour) : Colour(colour(whole));
+        return n > 1 ? sub_footprint_mixture<Colour>(noise, x, y, w, e, n, colour) : Colour(colour(whole));
     };
     Colour c = mixture(plan.cells);
     if (plan.blend > 0) c = (1.0 - plan.blend) * c + plan.blend * mixture(plan.blend_cells);
     if (plan.one > 0) c = (1.0 - plan.one) * c + plan.one * Colour(colour(whole));
     return c;
+}
+
+template <class Colour, class ColourOf>
+Colour sub_footprint_color(const FilteredNoise& noise, double x, double y, double w,
+                           const FilteredNoise::Parameters& whole, const SubFootprintOptions& options,
+                           ColourOf&& colour)
+{
+    return sub_footprint_color<Colour>(noise, x, y, w, FootprintEdges::square(w), whole, options, colour);
 }
 
 }  // namespace cmfilter

@@ -28,6 +28,16 @@ const SubFootprintTrial* SubFootprintChoice::best() const
     return b;
 }
 
+std::vector<double> sub_footprint_lods_between(const NoiseSigmaTable& table, double first, double last)
+{
+    const double lo = std::ceil(table.lod_first() - 1e-9), hi = std::floor(table.lod_last() + 1e-9);
+    if (lo > hi) return {table.lod_first()};
+    const double a = std::clamp(std::floor(first), lo, hi), b = std::clamp(std::ceil(last), lo, hi);
+    std::vector<double> lods;
+    for (double l = a; l <= b; l += 1) lods.push_back(l);
+    return lods;
+}
+
 Expected<SubFootprintChoice> choose_sub_footprints(const FilteredNoise& noise, const ColorMap& map,
                                                    const std::function<Rgb(double, double)>& gaussian_colour,
                                                    const SubFootprintChoiceOptions& options)

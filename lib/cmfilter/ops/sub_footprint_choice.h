@@ -26,6 +26,12 @@
 
 namespace cmfilter {
 
+// The integer LODs that cover a view's footprints from LOD `first` to `last`
+// (surface_lods.h): floor(first) to ceil(last), each kept within the integer
+// LODs of the noise's sigma table (which sub-footprints are measured over);
+// at least one (the table's first LOD where it spans no integer).
+std::vector<double> sub_footprint_lods_between(const NoiseSigmaTable& table, double first, double last);
+
 struct SubFootprintChoiceOptions {
     double tolerance = 1.0;  // mean CIEDE2000 at every measured LOD; finite and > 0
     // The LODs measured (log2 of the width over the base period), each

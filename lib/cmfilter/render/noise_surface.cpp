@@ -30,13 +30,16 @@ public:
             // (anisotropic_probes.h), colours averaged.
             const FootprintProbes probes =
                 footprint_probes(h.du_dx, h.dv_dx, h.du_dy, h.dv_dy, options.max_probes, options.footprint);
+            // Each probe's piece of the parallelogram, for mixture's squares.
+            const FootprintEdges piece{probes.step_u / probes.count, probes.step_v / probes.count, probes.minor_u,
+                                       probes.minor_v};
             for (int j = 0; j < probes.count; ++j) {
                 const double o = (j + 0.5) / probes.count - 0.5;
                 const FilteredNoise::Parameters f =
                     noise_.filter(h.u + o * probes.step_u, h.v + o * probes.step_v, probes.width);
                 if (colour)
-                    out.albedo +=
-                        albedo(h.u + o * probes.step_u, h.v + o * probes.step_v, probes.width, f, scratch.counts);
+                    out.albedo += albedo(h.u + o * probes.step_u, h.v + o * probes.step_v, probes.width, piece, f,
+                                         scratch.counts);
                 out.mean += f.mean;
                 out.sigma += f.sigma;
             }
@@ -53,21 +56,23 @@ public:
         out.mean = f.mean;
         out.sigma = f.sigma;
         out.lod = noise_.lod(w);
-        if (colour) out.albedo = albedo(h.u, h.v, w, f, scratch.counts);
+        if (colour) out.albedo = albedo(h.u, h.v, w, {h.du_dx, h.dv_dx, h.du_dy, h.dv_dy}, f, scratch.counts);
         return out;
     }
 
     Rgb point_albedo(double u, double v) const override { return color_.map.evaluate(noise_.noise()(u, v)); }
 
 private:
-    // The colour of the footprint of width w at (u, v), filtered to f:
-    // naive C0(mean), gaussian T(mean, sigma), mixture over its
-    // sub-footprints (noise_sub_footprints.h; f's own where it takes one).
+    // The colour of the footprint of width w and edges e at (u, v), filtered
+    // to f: naive C0(mean), gaussian T(mean, sigma), mixture over its
+    // sub-footprints, cut along its edges (noise_sub_footprints.h; f's own
+    // where it takes one).
     // Mixture takes gaussian's colour where the whole footprint is below the
     // small-sigma shortcut (gaussian_albedo.h): there C0 is linear within the
     // shortcut's bound over the footprint's values, so the squares' colours
     // average to the colour of their mean.
-    Rgb albedo(double u, double v, double w, const FilteredNoise::Parameters& f, AlbedoCounts& counts) const
+    Rgb albedo(double u, double v, double w, const FootprintEdges& e, const FilteredNoise::Parameters& f,
+               AlbedoCounts& counts) const
     {
         if (method_ == RenderMethod::Naive) return color_.map.evaluate(f.mean);
         if (method_ != RenderMethod::Mixture || f.sigma < color_.plain.below(f.mean))
@@ -76,7 +81,7 @@ private:
         // not once per square.
         ++counts.footprints;
         AlbedoCounts squares;
-        return sub_footprint_color<Rgb>(noise_, u, v, w, f, squares_, [&](const FilteredNoise::Parameters& p) {
+        return sub_footprint_color<Rgb>(noise_, u, v, w, e, f, squares_, [&](const FilteredNoise::Parameters& p) {
             return gaussian_albedo(color_, p.mean, p.sigma, squares);
         });
     }

@@ -122,6 +122,7 @@ struct RowRenderer {
                 image.mean[p] = static_cast<float>(f.mean);
                 image.sigma[p] = static_cast<float>(f.sigma);
                 image.lod[p] = static_cast<float>(f.lod);
+                if (!image.surface.empty()) image.surface[p] = static_cast<std::int32_t>(hit->surface);
                 colour = context.supersampled ? Rgb{} : shade(f.albedo, hit->hit.normal, scene.light);
             }
             if (coverage && coverage->on_edge(x, y)) {
@@ -247,6 +248,7 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<Material>& 
     image.mean.assign(pixels, 0.0f);
     image.sigma.assign(pixels, 0.0f);
     image.lod.assign(pixels, 0.0f);
+    if (options.surface_indices) image.surface.assign(pixels, -1);
     if (context.supersampled) {
         image.covered.assign(pixels, 0.0f);
         image.covered_distance.assign(pixels, 0.0f);

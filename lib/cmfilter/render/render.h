@@ -55,6 +55,7 @@
 #include "cmfilter/util/error.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace cmfilter {
@@ -78,6 +79,9 @@ struct RenderedImage {
     // the driver there (0 where nothing is hit).
     std::vector<unsigned char> hit;
     std::vector<float> distance, mean, sigma, lod;
+    // With RenderOptions::surface_indices (else empty): the index of the
+    // surface the centre ray hits, -1 where it hits none.
+    std::vector<std::int32_t> surface;
     // supersample and reference only (empty otherwise): the share of the
     // pixel's rays that hit a surface, and their mean distance (0 where none
     // does): the pixels a surface covers in part, whose centre ray may miss.

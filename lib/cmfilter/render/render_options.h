@@ -75,6 +75,9 @@ struct RenderOptions {
     // renders that surface by mixture with it (1: as gaussian); empty, 0 or
     // past its end: `method` with `sub_footprints`.
     std::vector<int> noise_sub_footprints;
+    // Also fill RenderedImage::surface (which surface each pixel's centre ray
+    // hits): what surface_lod_ranges (surface_lods.h) needs.
+    bool surface_indices = false;
     std::function<void(double)> progress;  // fraction of rows done, may be empty
 };
 

@@ -178,6 +178,37 @@ TEST_CASE("the squares tile the footprint: two by two are its quadrants")
     CHECK(sub_footprint_mixture<double>(n, x, y, w, 2, mean_of) == doctest::Approx(quadrants).epsilon(1e-14));
 }
 
+TEST_CASE("a sheared, turned footprint is cut along its own edges")
+{
+    // A rhombus at 30 degrees (edges of length w, 53 degrees apart), as a
+    // pixel's footprint on a curved surface: the pieces tile it, so the
+    // mixture follows a supersampling of the rhombus itself; the square of
+    // the same width around its centre covers another region.
+    const Fixture& f = fixture();
+    const double p0 = f.noise.noise().base_period();
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(0, 1);
+    for (double lod : {-2.0, 0.0}) {
+        const double w = p0 * std::exp2(lod), a = M_PI / 6, b = a + 0.927;
+        const FootprintEdges e{w * std::cos(a), w * std::sin(a), w * std::cos(b), w * std::sin(b)};
+        double along = 0, square = 0;
+        const int footprints = 48, strata = 24;
+        for (int j = 0; j < footprints; ++j) {
+            const double x = 256 * p0 * u(rng), y = 256 * p0 * u(rng);
+            const Rgb reference = cmfilter_test::supersampled_colour(f, x, y, e, strata, rng);
+            const FilteredNoise::Parameters whole = f.noise.filter(x, y, w);
+            along +=
+                ciede2000_linear_rgb(reference, sub_footprint_color<Rgb>(f.noise, x, y, w, e, whole, {}, colour_of));
+            square += ciede2000_linear_rgb(reference, mixture(x, y, w));
+        }
+        along /= footprints;
+        square /= footprints;
+        INFO("LOD " << lod << ": along the edges " << along << ", as a square " << square);
+        CHECK(along < 1.5);
+        CHECK(square > 2 * along);
+    }
+}
+
 TEST_CASE("bad sub-footprint options are named")
 {
     SubFootprintOptions o;

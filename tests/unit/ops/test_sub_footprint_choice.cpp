@@ -120,3 +120,19 @@ TEST_CASE("bad choice options are named")
     o.strata = 0;
     CHECK(field_of(o) == "SubFootprintChoiceOptions::strata");
 }
+
+TEST_CASE("a view's LODs: the integer LODs covering its range, within the sigma table's")
+{
+    // A table from LOD -9 to 2 (45 rows of 0.25): integer LODs -9 .. 2.
+    auto table = NoiseSigmaTable::create(-9, 0.25, std::vector<double>(45, 0.1));
+    REQUIRE(table);
+    CHECK(sub_footprint_lods_between(*table, -3.4, -1.2) == std::vector<double>{-4, -3, -2, -1});
+    CHECK(sub_footprint_lods_between(*table, -2, -2) == std::vector<double>{-2});
+    CHECK(sub_footprint_lods_between(*table, 0.5, 7) == std::vector<double>{0, 1, 2});
+    CHECK(sub_footprint_lods_between(*table, 5, 7) == std::vector<double>{2});
+    CHECK(sub_footprint_lods_between(*table, -20, -15) == std::vector<double>{-9});
+    // A table spanning no integer LOD: its first.
+    auto short_table = NoiseSigmaTable::create(0.2, 0.25, {0.1, 0.1, 0.1});
+    REQUIRE(short_table);
+    CHECK(sub_footprint_lods_between(*short_table, -1, 3) == std::vector<double>{0.2});
+}

@@ -2,8 +2,10 @@
 // render's mixture on a noise driver (noise_sub_footprints.h through
 // noise_surface.h): a ground plane whose fBm is in the transition, seen from
 // straight down to the horizon, stays finite and never further from the
-// ray-traced reference than gaussian; with one square it is gaussian.
+// ray-traced reference than gaussian; with one square it is gaussian. The
+// LODs a view reaches on it (surface_lods.h), which --method auto measures.
 #include "cmfilter/render/render.h"
+#include "cmfilter/render/surface_lods.h"
 #include "cmfilter/tables/gaussian_color_table.h"
 
 #include "noise_transition_fixture.h"
@@ -125,4 +127,42 @@ TEST_CASE("mixture with one square per footprint renders as gaussian, bit for bi
     auto bad = render(p.scene, p.materials, options);
     REQUIRE(!bad);
     CHECK(bad.error().field == "RenderOptions::noise_sub_footprints");
+}
+
+TEST_CASE("the LODs a view reaches: a plane seen straight down has one, a surface behind the camera none")
+{
+    // Straight down from height 2 with a 30-degree field of view over 16
+    // pixels, the plane is parallel to the image: every pixel's footprint
+    // is the same square, 2 * 2 tan(15 deg) / 16 scene units, 16 noise units
+    // to a scene unit: LOD log2(4 tan(15 deg) / p_0).
+    NoisePlane p = noise_plane(90.0, 16, 16);
+    Surface behind;
+    behind.kind = SurfaceKind::Sphere;
+    behind.center = {0, 6, 0};
+    behind.radius = 0.5;
+    p.scene.surfaces.push_back(behind);
+    p.materials.push_back(p.materials.front());
+    const double p0 = cmfilter_test::noise_transition_fixture().noise.noise().base_period();
+    const double expected = std::log2(4 * std::tan(kTwoPi / 24) / p0);
+    RenderOptions options;
+    options.method = RenderMethod::Mixture;
+    // One footprint a pixel: a square's edges differ by rounding, and two
+    // probes (ceil of a ratio a hair above 1) would halve one edge.
+    options.max_probes = 1;
+    options.region = PixelRegion{2, 3, 5, 7};  // the survey takes the whole frame
+    auto ranges = survey_surface_lods(p.scene, p.materials, options);
+    REQUIRE(ranges);
+    REQUIRE(ranges->size() == 2);
+    CHECK((*ranges)[0].pixels == 256);
+    CHECK((*ranges)[0].first == doctest::Approx(expected).epsilon(1e-5));
+    CHECK((*ranges)[0].last == doctest::Approx(expected).epsilon(1e-5));
+    CHECK((*ranges)[1].pixels == 0);
+
+    // From an image without surface indices: refused, naming the field.
+    options.region.reset();
+    auto image = render(p.scene, p.materials, options);
+    REQUIRE(image);
+    auto refused = surface_lod_ranges(*image, 2);
+    REQUIRE(!refused);
+    CHECK(refused.error().message.find("RenderedImage::surface") != std::string::npos);
 }
