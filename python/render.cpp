@@ -50,6 +50,7 @@ void bind_render(py::module_& m)
             options.slope_shading = slope_shading == "correlated" ? SlopeShading::Correlated
                                                                   : SlopeShading::Uncorrelated;
             options.threads = threads;
+            options.surface_indices = aovs;
             MaterialOptions material_options;
             material_options.threads = threads;
             set_method_materials(options.method, material_options);
@@ -87,6 +88,7 @@ void bind_render(py::module_& m)
             d["mean"] = plane(std::move(image.mean), h, w);
             d["sigma"] = plane(std::move(image.sigma), h, w);
             d["lod"] = plane(std::move(image.lod), h, w);
+            d["surface"] = plane(std::move(image.surface), h, w);
             if (!image.shaded.empty()) d["shaded"] = owning_array(std::move(image.shaded), {h, w, 3});
             d["origin"] = py::make_tuple(image.x0, image.y0);
             d["frame_size"] = py::make_tuple(image.frame_width, image.frame_height);
@@ -100,7 +102,7 @@ void bind_render(py::module_& m)
         py::arg("ocio_config") = "", py::arg("threads") = 0,
         "Renders a scene file (docs/scene-format.md) by naive, gaussian, gaussian-exact, mixture, exact, supersample "
         "or reference, as `cmfilter render` (sub_footprints: mixture's most squares per axis for noise drivers): (H, W, 3) float32 scene-linear, or with aovs=True a dict of it (rgb) "
-        "and the per-pixel hit, distance, mean, sigma and lod.");
+        "and the per-pixel hit, distance, mean, sigma, lod and surface (the index of the surface hit, -1 for none).");
 }
 
 }  // namespace cmfilter::python

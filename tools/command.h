@@ -187,16 +187,19 @@ void print_method_choice(std::ostream& out, const MethodChoice& choice);
 
 // render --method auto (render_method_choice.cpp): each texture surface's
 // cheapest method for the tolerance, measured on its driver and table as
-// apply --tolerance measures (temporary files); BadInput naming the surface
-// when none meets it. Surfaces of other drivers are left out.
+// apply --tolerance measures (temporary files), at options.lods; without
+// them, at the integer levels that cover the view's footprints on the
+// surface (`view`, by surface: survey_surface_lods), within its pyramid, a
+// surface no pixel sees not measured; with neither, levels 1 to 8. BadInput
+// naming the surface when none meets it. Surfaces of other drivers are left
+// out.
 struct SurfaceMethodChoice {
     std::size_t surface = 0;
     MethodChoice choice;
 };
-Expected<std::vector<SurfaceMethodChoice>> choose_texture_methods(const Scene& scene,
-                                                                  const std::vector<Material>& materials,
-                                                                  const ColorConfig& config,
-                                                                  const MethodChoiceOptions& options, int threads);
+Expected<std::vector<SurfaceMethodChoice>>
+choose_texture_methods(const Scene& scene, const std::vector<Material>& materials, const ColorConfig& config,
+                       const MethodChoiceOptions& options, const std::vector<SurfaceLodRange>* view, int threads);
 RenderMethod render_method_of(FilterMethod method);
 
 // render --method auto (render_method_choice.cpp): each noise surface's

@@ -220,11 +220,29 @@ Status run(const RenderArgs& args)
     std::vector<SurfaceSubFootprintChoice> noise_choices;
     std::vector<int> noise_sub_footprints;
     if (automatic) {
+        // Without --measure-lods, each texture and noise is measured at the
+        // LODs the view reaches on it: the whole frame's centre rays,
+        // surveyed first.
+        std::optional<std::vector<SurfaceLodRange>> view;
+        const bool measured = std::any_of(materials->begin(), materials->end(), [](const Material& m) {
+            return (has_noise_driver(m) || std::holds_alternative<TextureDriver>(m.driver)) && !is_microsurface(m);
+        });
+        if (args.measure_lods.empty() && measured) {
+            auto seen = survey_surface_lods(*scene, *materials, options);
+            if (!seen) return seen.error();
+            view = std::move(*seen);
+            for (std::size_t i = 0; i < view->size(); ++i) {
+                const Material& m = (*materials)[i];
+                if (talk && (*view)[i].pixels == 0 && !is_microsurface(m) &&
+                    (has_noise_driver(m) || std::holds_alternative<TextureDriver>(m.driver)))
+                    std::cerr << "render: surface " << i << ": no pixel sees it; its methods are not measured\n";
+            }
+        }
         MethodChoiceOptions co;
         co.tolerance = *args.tolerance;
         co.lods = args.measure_lods;
         if (talk) std::cerr << "render: measuring each texture's methods for --tolerance " << *args.tolerance << "\n";
-        auto chosen = choose_texture_methods(*scene, *materials, *config, co, args.threads);
+        auto chosen = choose_texture_methods(*scene, *materials, *config, co, view ? &*view : nullptr, args.threads);
         if (!chosen) return chosen.error();
         choices = std::move(*chosen);
         texture_methods.assign(materials->size(), RenderMethod::Gaussian);
@@ -244,20 +262,6 @@ Status run(const RenderArgs& args)
         }
         if (talk)
             std::cerr << "render: measuring each noise's sub-footprints for --tolerance " << *args.tolerance << "\n";
-        // Without --measure-lods, each noise is measured at the LODs the
-        // view reaches on it: the whole frame's centre rays, surveyed first.
-        std::optional<std::vector<SurfaceLodRange>> view;
-        const bool noises = std::any_of(materials->begin(), materials->end(),
-                                        [](const Material& m) { return has_noise_driver(m) && !is_microsurface(m); });
-        if (args.measure_lods.empty() && noises) {
-            auto seen = survey_surface_lods(*scene, *materials, options);
-            if (!seen) return seen.error();
-            view = std::move(*seen);
-            for (std::size_t i = 0; i < view->size(); ++i)
-                if (talk && (*view)[i].pixels == 0 && has_noise_driver((*materials)[i]) &&
-                    !is_microsurface((*materials)[i]))
-                    std::cerr << "render: surface " << i << ": no pixel sees it; its noise is not measured\n";
-        }
         auto squares = choose_noise_sub_footprints(*scene, *materials, *args.tolerance, args.measure_lods,
                                                    view ? &*view : nullptr, args.threads);
         if (!squares) return squares.error();

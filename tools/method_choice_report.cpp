@@ -35,14 +35,13 @@ nlohmann::json method_choice_json(const MethodChoice& choice)
 
 void add_measure_lods_option(CLI::App& app, std::vector<double>& lods, bool noise)
 {
-    app.add_option(
-           "--measure-lods", lods,
-           noise ? "LODs --tolerance measures each method at, comma-separated: pyramid levels for textures "
-                   "(default: every integer LOD from 1 to 8 the pyramid reaches), log2(width / base period) "
-                   "for noises (default: the integer LODs that cover the footprints the view's pixels reach on each "
-                   "noise, within its sigma table)"
-                 : "LODs --tolerance measures each method at, comma-separated (default: every integer LOD "
-                   "from 1 to 8 the pyramid reaches)")
+    app.add_option("--measure-lods", lods,
+                   noise
+                       ? "LODs --tolerance measures each method at, comma-separated: pyramid levels for textures, "
+                         "log2(width / base period) for noises (default: on each surface, the integer LODs that cover "
+                         "the footprints the view's pixels reach, within its pyramid or sigma table)"
+                       : "LODs --tolerance measures each method at, comma-separated (default: every integer LOD "
+                         "from 1 to 8 the pyramid reaches)")
         ->delimiter(',');
 }
 

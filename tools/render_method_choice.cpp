@@ -15,6 +15,8 @@
 #include "cmfilter/util/memory_budget.h"
 #include "cmfilter/util/temporary_file.h"
 
+#include <algorithm>
+#include <cmath>
 #include <variant>
 
 namespace cmfilter::cli {
@@ -26,16 +28,27 @@ constexpr double kAutoHistogramBytes = 512.0 * 1024 * 1024;
 
 }  // namespace
 
-Expected<std::vector<SurfaceMethodChoice>> choose_texture_methods(const Scene& scene,
-                                                                  const std::vector<Material>& materials,
-                                                                  const ColorConfig& config,
-                                                                  const MethodChoiceOptions& options, int threads)
+Expected<std::vector<SurfaceMethodChoice>>
+choose_texture_methods(const Scene& scene, const std::vector<Material>& materials, const ColorConfig& config,
+                       const MethodChoiceOptions& options, const std::vector<SurfaceLodRange>* view, int threads)
 {
     std::vector<SurfaceMethodChoice> out;
     for (std::size_t i = 0; i < materials.size(); ++i) {
         const Material& m = materials[i];
         const auto* texture = std::get_if<TextureDriver>(&m.driver);
         if (!texture || is_microsurface(m)) continue;
+        // The levels its pixels reach: floor of the least to ceil of the
+        // greatest LOD, within the pyramid (render's LODs are log2 of the
+        // footprint's width in level-0 texels, as apply's levels).
+        std::vector<double> seen_lods;
+        if (options.lods.empty() && view && i < view->size()) {
+            const SurfaceLodRange& seen = (*view)[i];
+            if (seen.pixels == 0) continue;  // no pixel needs it
+            const double top = texture->texture.moments().reachable_levels() - 1;
+            const double a = std::clamp(std::floor(seen.first), 0.0, top);
+            const double b = std::clamp(std::ceil(seen.last), 0.0, top);
+            for (double l = a; l <= b; l += 1) seen_lods.push_back(l);
+        }
         const std::string surface = "surface " + std::to_string(i) + " (" + scene.path + ")";
         if (!m.provenance.missing_driver.empty())
             return io_error(m.provenance.missing_driver + "; --method auto measures each method against the box "
@@ -90,6 +103,7 @@ Expected<std::vector<SurfaceMethodChoice>> choose_texture_methods(const Scene& s
         if (histograms) inputs.histograms_path = histograms->path();
         inputs.threads = threads;
         MethodChoiceOptions o = options;
+        if (!seen_lods.empty()) o.lods = seen_lods;
         // A `moments` file of two moments renders as it is: no mixture.
         if (!m.provenance.moments_baked && info.order != 4 && o.candidates.empty()) {
             o.candidates = {FilterMethod::Naive, FilterMethod::Gaussian};

@@ -287,7 +287,7 @@ cmfilter_cli_case(NAME render.auto-noise-records EXIT 0
 # LODs -3 and -2; the sphere behind the camera is not measured.
 cmfilter_cli_case(NAME render.auto-noise-view-lods EXIT 0
                   STDOUT "surface 0: .*at LOD -3, -2:\n"
-                  STDERR "surface 1: no pixel sees it; its noise is not measured"
+                  STDERR "surface 1: no pixel sees it; its methods are not measured"
                   COMMAND ${CMF} render ${SCB}/noise-auto-down.json --method auto --tolerance 100 --probes 1
                           -o ${OUT}/render-auto-noise-down.exr)
 cmfilter_cli_case(NAME render.bad.auto-noise-none-meets EXIT 3

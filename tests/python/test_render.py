@@ -30,8 +30,12 @@ def test_render_equals_the_command(cli, source_dir, tmp_path, method):
 def test_render_aovs_and_region(source_dir):
     scene = str(source_dir / "tests/cli/scenes/good.json")
     whole = cmfilter.render(scene, method="naive", size=(16, 9), aovs=True)
-    assert set(whole) >= {"rgb", "hit", "distance", "mean", "sigma", "lod"}
+    assert set(whole) >= {"rgb", "hit", "distance", "mean", "sigma", "lod", "surface"}
     assert whole["sigma"].shape == (9, 16)
+    # One plane below the horizon: its index where a centre ray hits, -1 in the sky.
+    assert whole["surface"].dtype == np.int32
+    np.testing.assert_array_equal(whole["surface"], np.where(whole["hit"] == 1, 0, -1))
+    assert 0 < whole["hit"].sum() < 16 * 9
     part = cmfilter.render(scene, method="naive", size=(16, 9), region=(4, 2, 12, 7))
     np.testing.assert_array_equal(part, whole["rgb"][2:7, 4:12])
 
