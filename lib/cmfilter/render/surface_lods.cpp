@@ -36,6 +36,7 @@ Expected<std::vector<SurfaceLodRange>> survey_surface_lods(const Scene& scene, c
     survey.region.reset();
     survey.texture_methods.clear();
     survey.noise_sub_footprints.clear();
+    survey.edge_coverage = false;
     survey.surface_indices = true;
     survey.progress = nullptr;
     auto image = render(scene, materials, survey);

@@ -3,8 +3,8 @@
 // (RenderedImage::lod: log2 of the footprint's width, or of each anisotropic
 // probe's, over a noise's base period or in a texture's level-0 texels) over
 // the pixels whose centre ray hits the surface. render --method auto
-// measures each noise's sub-footprints at these LODs only: the view's, not
-// every LOD of its sigma table.
+// measures each texture's methods and each noise's sub-footprints at these
+// LODs only: the view's, not every level of its pyramid or sigma table.
 #pragma once
 
 #include "cmfilter/render/render.h"
@@ -30,7 +30,8 @@ Expected<std::vector<SurfaceLodRange>> surface_lod_ranges(const RenderedImage& i
 // The ranges of the whole frame as `options` would render it: its centre
 // rays rendered by naive (the footprints and LODs of every one-ray method,
 // without their colours' cost), whatever options' method, region and
-// per-surface choices; no progress is reported.
+// per-surface choices, and without edge coverage (the LODs are the centre
+// rays' either way); no progress is reported.
 Expected<std::vector<SurfaceLodRange>> survey_surface_lods(const Scene& scene, const std::vector<Material>& materials,
                                                            const RenderOptions& options);
 
