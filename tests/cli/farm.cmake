@@ -24,6 +24,10 @@ cmfilter_stitch_case(gaussian ${SC}/good.json "" --method gaussian -- --method n
 cmfilter_stitch_case(supersample ${SC}/good.json "" --method supersample --spp 5 -- --method supersample --spp 5 --seed 1)
 cmfilter_stitch_case(reference ${SC}/good.json "" --method reference -- --method reference --seed 1)
 cmfilter_stitch_case(exact ${SCB}/texture-quantised.json "" --method exact -- --method naive)
+# --method auto chooses from the whole frame's LODs, so every tile chooses
+# alike: here the frame's LODs -5 to 0 take 4 x 4 squares at DE 2, where the
+# near tiles' own LODs (-5 to -3) would take 2 x 2.
+cmfilter_stitch_case(auto-noise ${SCB}/noise-auto-tilted.json "" --method auto --tolerance 2 -- --method gaussian)
 cmfilter_stitch_case(microsurface-gaussian-exact ${MICRO_SCENE} microsurface_scene --method gaussian-exact
                      -- --method gaussian)
 cmfilter_stitch_case(microsurface-supersample ${MICRO_SCENE} microsurface_scene --method supersample --spp 4
