@@ -17,6 +17,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <iomanip>
 #include <sstream>
 #include <string>
@@ -110,6 +111,35 @@ inline cmfilter::ErrorSummary render_difference(const cmfilter::RenderedImage& a
         errors.push_back(cmfilter::ciede2000_linear_rgb(x, y));
     }
     return cmfilter::summarize_errors(errors);
+}
+
+// The stability check of mixture against gaussian on one scene: each
+// rendered, with a reference of the given seed, mixture's pixels all finite,
+// and mixture's mean CIEDE2000 from the reference no more than gaussian's
+// plus 0.05 (a shared reference).
+inline void check_mixture_within_gaussian(const cmfilter::Scene& scene,
+                                          const std::vector<cmfilter::Material>& materials, std::uint64_t seed,
+                                          double elevation)
+{
+    using namespace cmfilter;
+    RenderOptions options;
+    options.method = RenderMethod::Mixture;
+    auto mixture = render(scene, materials, options);
+    options.method = RenderMethod::Gaussian;
+    auto gaussian = render(scene, materials, options);
+    options.method = RenderMethod::Reference;
+    options.seed = seed;
+    auto reference = render(scene, materials, options);
+    REQUIRE(mixture);
+    REQUIRE(gaussian);
+    REQUIRE(reference);
+    for (float v : mixture->rgb) REQUIRE(std::isfinite(v));
+    const ErrorSummary m = render_difference(*mixture, *reference);
+    const ErrorSummary g = render_difference(*gaussian, *reference);
+    MESSAGE("elevation " << elevation << ": " << m.count << " pixels on the plane; mean CIEDE2000 mixture " << m.mean
+                         << ", gaussian " << g.mean);
+    CHECK(m.count > 0);
+    CHECK(m.mean <= g.mean + 0.05);
 }
 
 }  // namespace cmfilter_test

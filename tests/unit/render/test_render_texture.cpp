@@ -573,24 +573,7 @@ TEST_CASE("mixture stays finite and within gaussian's error from straight down t
         material_options.moment_order = 4;
         auto materials = prepare_materials(scene, *config, material_options);
         REQUIRE(materials);
-        RenderOptions options;
-        options.method = RenderMethod::Mixture;
-        auto mixture = render(scene, *materials, options);
-        options.method = RenderMethod::Gaussian;
-        auto gaussian = render(scene, *materials, options);
-        options.method = RenderMethod::Reference;
-        options.seed = 3;
-        auto reference = render(scene, *materials, options);
-        REQUIRE(mixture);
-        REQUIRE(gaussian);
-        REQUIRE(reference);
-        for (float v : mixture->rgb) REQUIRE(std::isfinite(v));
-        const ErrorSummary m = cmfilter_test::render_difference(*mixture, *reference);
-        const ErrorSummary g = cmfilter_test::render_difference(*gaussian, *reference);
-        MESSAGE("elevation " << elevation << ": " << m.count << " pixels on the plane; mean CIEDE2000 mixture "
-                             << m.mean << ", gaussian " << g.mean);
-        CHECK(m.count > 0);
-        CHECK(m.mean <= g.mean + 0.05);
+        cmfilter_test::check_mixture_within_gaussian(scene, *materials, 3, elevation);
     }
 }
 
