@@ -49,12 +49,10 @@ Expected<SubFootprintChoice> choose_sub_footprints(const FilteredNoise& noise, c
         return bad("footprints", std::to_string(options.footprints) + " is invalid (expected at least 1)").error();
     if (options.strata < 1)
         return bad("strata", std::to_string(options.strata) + " is invalid (expected at least 1)").error();
-    std::vector<double> lods = options.lods;
-    if (lods.empty()) {
-        const NoiseSigmaTable& table = noise.table();
-        for (double l = std::ceil(table.lod_first()); l <= table.lod_last() + 1e-9; l += 1) lods.push_back(l);
-        if (lods.empty()) lods.push_back(table.lod_first());
-    }
+    // Default: every integer LOD of the sigma table.
+    const NoiseSigmaTable& table = noise.table();
+    std::vector<double> lods =
+        options.lods.empty() ? sub_footprint_lods_between(table, table.lod_first(), table.lod_last()) : options.lods;
     for (double l : lods)
         if (!std::isfinite(l)) return bad("lods", "holds " + std::to_string(l) + " (expected finite LODs)").error();
     std::vector<int> candidates = options.candidates;
