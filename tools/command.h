@@ -16,6 +16,7 @@
 #include "cmfilter/ops/method_choice.h"
 #include "cmfilter/ops/sub_footprint_choice.h"
 #include "cmfilter/render/pixel_region.h"
+#include "cmfilter/render/microsurface_method_choice.h"
 #include "cmfilter/render/render_options.h"
 #include "cmfilter/render/surface_lods.h"
 #include "cmfilter/scene/material.h"
@@ -219,6 +220,14 @@ choose_noise_sub_footprints(const Scene& scene, const std::vector<Material>& mat
                             const std::vector<double>& lods, const std::vector<SurfaceLodRange>* view, int threads);
 nlohmann::json sub_footprint_choice_json(const SubFootprintChoice& choice);
 void print_sub_footprint_choice(std::ostream& out, const SubFootprintChoice& choice);
+
+// render --method auto: each microsurface surface's choice
+// (render/microsurface_method_choice.h): {"tolerance", "pixels",
+// "surface_pixels", "lods", "band_pixels", "method" (null when none met),
+// "trials": [{"method", "errors", "mean", "worst", "worst_lod", "meets",
+// "seconds"}]}; and as a table of lines for the text report.
+nlohmann::json microsurface_choice_json(const MicrosurfaceMethodChoice& choice);
+void print_microsurface_choice(std::ostream& out, const MicrosurfaceMethodChoice& choice);
 
 // A progress callback printing "\r<command>: N%" on stderr when the percent
 // changes (a newline at 100%); callers use it only when stderr is a terminal.

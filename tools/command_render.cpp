@@ -135,12 +135,13 @@ Status run(const RenderArgs& args)
 {
     if (auto st = check_rgb_image_output(args.output); !st) return st;
     // auto: each texture surface's method and each noise surface's
-    // sub-footprints chosen for --tolerance (render_method_choice.cpp);
-    // every other surface gaussian.
+    // sub-footprints chosen for --tolerance (render_method_choice.cpp), each
+    // microsurface's method (render/microsurface_method_choice.h); every
+    // other surface gaussian.
     const bool automatic = args.method == "auto";
     if (automatic && !args.tolerance)
-        return bad_input("--method auto chooses each texture's method and each noise's sub-footprints for a "
-                         "tolerance: it needs --tolerance DE");
+        return bad_input("--method auto chooses each texture's and microsurface's method and each noise's "
+                         "sub-footprints for a tolerance: it needs --tolerance DE");
     auto method = parse_render_method(automatic ? "gaussian" : args.method);
     if (!method) return method.error();
     auto footprint = parse_footprint_width(args.footprint);
@@ -219,6 +220,8 @@ Status run(const RenderArgs& args)
     std::vector<RenderMethod> texture_methods;
     std::vector<SurfaceSubFootprintChoice> noise_choices;
     std::vector<int> noise_sub_footprints;
+    std::vector<SurfaceMicrosurfaceChoice> microsurface_choices;
+    std::vector<RenderMethod> microsurface_methods;
     if (automatic) {
         // Without --measure-lods, each texture and noise is measured at the
         // LODs the view reaches on it: the whole frame's centre rays,
@@ -269,10 +272,34 @@ Status run(const RenderArgs& args)
         noise_sub_footprints.assign(materials->size(), 0);
         for (const SurfaceSubFootprintChoice& c : noise_choices)
             noise_sub_footprints[c.surface] = c.choice.choice()->max_cells;
+        if (std::any_of(materials->begin(), materials->end(), is_microsurface)) {
+            if (talk)
+                std::cerr << "render: measuring each microsurface's methods for --tolerance " << *args.tolerance
+                          << "\n";
+            MicrosurfaceChoiceOptions mo;
+            mo.tolerance = *args.tolerance;
+            mo.render = options;
+            auto measured_microsurfaces = choose_microsurface_methods(*scene, *materials, mo);
+            if (!measured_microsurfaces) return measured_microsurfaces.error();
+            microsurface_choices = std::move(*measured_microsurfaces);
+            microsurface_methods.assign(materials->size(), RenderMethod::Gaussian);
+            for (const SurfaceMicrosurfaceChoice& c : microsurface_choices) {
+                if (!c.choice.choice())  // exact, the reference, is among the candidates
+                    return bad_input("surface " + std::to_string(c.surface) + " (" + scene->path +
+                                     "): no method meets --tolerance " + std::to_string(*args.tolerance));
+                microsurface_methods[c.surface] = c.choice.choice()->method;
+            }
+            for (std::size_t i = 0; i < materials->size(); ++i)
+                if (talk && is_microsurface((*materials)[i]) &&
+                    std::none_of(microsurface_choices.begin(), microsurface_choices.end(),
+                                 [i](const SurfaceMicrosurfaceChoice& c) { return c.surface == i; }))
+                    std::cerr << "render: surface " << i << ": no pixel sees it; its methods are not measured\n";
+        }
     }
 
     options.texture_methods = texture_methods;
     options.noise_sub_footprints = noise_sub_footprints;
+    options.microsurface_methods = microsurface_methods;
     if (talk && isatty(STDERR_FILENO)) options.progress = terminal_progress("render");
     auto image = render(*scene, *materials, options);
     if (!image) return image.error();
@@ -294,6 +321,11 @@ Status run(const RenderArgs& args)
             squares += (squares.empty() ? "" : ", ") + std::to_string(c.surface) + ": " +
                        std::to_string(c.choice.choice()->max_cells);
         a.text.push_back({"cmfilter:noise_sub_footprints", squares});
+        std::string layered;
+        for (const SurfaceMicrosurfaceChoice& c : microsurface_choices)
+            layered += (layered.empty() ? "" : ", ") + std::to_string(c.surface) + ": " +
+                       to_string(c.choice.choice()->method);
+        a.text.push_back({"cmfilter:microsurface_methods", layered});
     }
     a.numbers = {{"cmfilter:samples", static_cast<double>(image->samples)},
                  {"cmfilter:seed", static_cast<double>(args.seed)}};
@@ -333,6 +365,10 @@ Status run(const RenderArgs& args)
             for (const SurfaceSubFootprintChoice& c : noise_choices)
                 j["noise_sub_footprints"].push_back(
                     {{"surface", c.surface}, {"choice", sub_footprint_choice_json(c.choice)}});
+            j["microsurface_methods"] = nlohmann::json::array();
+            for (const SurfaceMicrosurfaceChoice& c : microsurface_choices)
+                j["microsurface_methods"].push_back(
+                    {{"surface", c.surface}, {"choice", microsurface_choice_json(c.choice)}});
         }
         j["samples"] = image->samples;
         j["seed"] = args.seed;
@@ -381,6 +417,10 @@ Status run(const RenderArgs& args)
                       << "\n";
             print_sub_footprint_choice(std::cout, c.choice);
         }
+        for (const SurfaceMicrosurfaceChoice& c : microsurface_choices) {
+            std::cout << "  surface " << c.surface << ": " << to_string(c.choice.choice()->method) << "\n";
+            print_microsurface_choice(std::cout, c.choice);
+        }
     }
     return ok();
 }
@@ -395,7 +435,7 @@ Command setup_render(CLI::App& parent)
     app->add_option("-o,--output", args->output, "Image to write (.exr scene-linear, .png/.jpg sRGB)")->required();
     app->add_option(
            "--method", args->method,
-           "naive, gaussian, gaussian-exact (microsurfaces: D_h's exact moments), mixture (texture drivers: two Gaussians of four moments; noise drivers: a Gaussian per square of a footprint cut into up to --sub-footprints squares per axis in the transition; others as gaussian), exact (microsurfaces, or texture drivers with at most 256 values), supersample, reference, or auto (with --tolerance: each texture's cheapest method and each noise's fewest sub-footprints that meet it, measured; others gaussian)")
+           "naive, gaussian, gaussian-exact (microsurfaces: D_h's exact moments), mixture (texture drivers: two Gaussians of four moments; noise drivers: a Gaussian per square of a footprint cut into up to --sub-footprints squares per axis in the transition; others as gaussian), exact (microsurfaces, or texture drivers with at most 256 values), supersample, reference, or auto (with --tolerance: each texture's and each microsurface's cheapest method and each noise's fewest sub-footprints that meet it, measured; others gaussian)")
         ->capture_default_str();
     app->add_option("--size,--resolution", args->size,
                     "Render at WxH instead of the scene's camera resolution (the same camera and vertical field "

@@ -78,6 +78,48 @@ void print_sub_footprint_choice(std::ostream& out, const SubFootprintChoice& cho
     out.precision(precision);
 }
 
+nlohmann::json microsurface_choice_json(const MicrosurfaceMethodChoice& choice)
+{
+    nlohmann::json trials = nlohmann::json::array();
+    for (const MicrosurfaceTrial& t : choice.trials)
+        trials.push_back({{"method", to_string(t.method)},
+                          {"errors", t.errors},
+                          {"mean", t.mean},
+                          {"worst", t.worst},
+                          {"worst_lod", t.worst_lod},
+                          {"meets", t.meets},
+                          {"seconds", t.seconds}});
+    const MicrosurfaceTrial* c = choice.choice();
+    return {{"tolerance", choice.tolerance},
+            {"pixels", choice.pixels},
+            {"surface_pixels", choice.surface_pixels},
+            {"lods", choice.lods},
+            {"band_pixels", choice.band_pixels},
+            {"method", c ? nlohmann::json(to_string(c->method)) : nlohmann::json(nullptr)},
+            {"trials", std::move(trials)}};
+}
+
+void print_microsurface_choice(std::ostream& out, const MicrosurfaceMethodChoice& choice)
+{
+    const auto flags = out.flags();
+    const auto precision = out.precision();
+    out << std::setprecision(3) << "  tolerance  mean CIEDE2000 from exact <= " << choice.tolerance
+        << " in every LOD band " << lod_list_text(choice.lods) << " (" << choice.pixels << " of its "
+        << choice.surface_pixels << " pixels):\n";
+    for (std::size_t i = 0; i < choice.trials.size(); ++i) {
+        const MicrosurfaceTrial& t = choice.trials[i];
+        out << "    " << std::left << std::setw(14) << to_string(t.method) << std::right << " worst " << std::setw(7)
+            << t.worst << " (LOD " << t.worst_lod << "), mean " << std::setw(7) << t.mean << ", " << std::setw(7)
+            << t.seconds << " s"
+            << (choice.chosen == i ? "  <- chosen"
+                : t.meets          ? "  meets"
+                                   : "")
+            << "\n";
+    }
+    out.flags(flags);
+    out.precision(precision);
+}
+
 void print_method_choice(std::ostream& out, const MethodChoice& choice)
 {
     const auto flags = out.flags();

@@ -41,6 +41,8 @@ cmfilter_json_case(render-auto "" ${CMF} render ${SCB}/texture-auto.json --metho
                    --measure-lods 1 -o ${JOUT}/render-auto.exr)
 cmfilter_json_case(render-auto-noise "" ${CMF} render ${SCB}/noise-auto.json --method auto --tolerance 100
                    --measure-lods 0 -o ${JOUT}/render-auto-noise.exr)
+cmfilter_json_case(render-auto-microsurface microsurface_scene ${CMF} render ${MICRO_SCENE} --method auto
+                   --tolerance 1 -o ${JOUT}/render-auto-microsurface.exr)
 cmfilter_json_case(render-mixture-noise "" ${CMF} render ${SC}/good.json --method mixture --sub-footprints 2
                    -o ${JOUT}/render-mixture-noise.exr)
 cmfilter_json_case(render-reference "" ${CMF} render ${SC}/good.json --method reference -o ${JOUT}/render-ref.exr)

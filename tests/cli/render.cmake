@@ -95,7 +95,7 @@ cmfilter_cli_case(NAME render.auto-records-choice EXIT 0
                   COMMAND bash -c "set -o pipefail && ($0 render $1 --method auto --tolerance 100 --measure-lods 1 -o $2 -q && oiiotool --info -v $2) | tr '\\n' ' '"
                           ${CMF} ${SCB}/texture-auto.json ${OUT}/render-auto.exr)
 cmfilter_cli_case(NAME render.bad.auto-without-tolerance EXIT 3
-                  STDERR "--method auto chooses each texture's method and each noise's sub-footprints for a tolerance: it needs --tolerance DE"
+                  STDERR "--method auto chooses each texture's and microsurface's method and each noise's sub-footprints for a tolerance: it needs --tolerance DE"
                   ABSENT ${RO} COMMAND ${CMF} render ${SCB}/texture-auto.json --method auto -o ${RO})
 # The exact method: a driver image with four values (its histograms baked in
 # process); a noise driver and a driver with 1024 values are refused.
@@ -159,6 +159,20 @@ add_test(NAME cli.render.microsurface-supersample-finite
          COMMAND bash ${CHECK_FINITE} ${OIIOTOOL} ${OUT}/render-microsurface-supersample.exr 32 24 --nonnegative)
 set_tests_properties(cli.render.microsurface-supersample-finite PROPERTIES
                      FIXTURES_REQUIRED render_microsurface_supersample LABELS cli)
+# --method auto on a microsurface: its cheapest one-ray method measured
+# against exact on the view (render/microsurface_method_choice.h), recorded.
+# A tolerance every method meets takes naive; at 1 the recorded method (with
+# its tables fitted to the same tolerance) renders the image auto wrote,
+# pixel for pixel (idiff: no difference at all), and it is not naive.
+cmfilter_cli_case(NAME render.auto-microsurface-records EXIT 0
+                  STDOUT "surface 0: naive.*naive +worst.*<- chosen.*cmfilter:microsurface_methods: \"0: naive\""
+                  COMMAND bash -c "set -o pipefail && ($0 render $1 --method auto --tolerance 1000 -o $2 && oiiotool --info -v $2) | tr '\\n' ' '"
+                          ${CMF} ${MICRO_SCENE} ${OUT}/render-auto-microsurface.exr)
+cmfilter_cli_case(NAME render.auto-microsurface-renders-its-choice EXIT 0
+                  COMMAND bash -c "set -e -o pipefail && $0 render $1 --method auto --tolerance 1 -o $2/render-auto-ms.exr -q && m=$(oiiotool --info -v $2/render-auto-ms.exr | sed -n 's/.*cmfilter:microsurface_methods: \"0: \\(.*\\)\"/\\1/p') && echo chosen $m && test -n \"$m\" && test \"$m\" != naive && $0 render $1 --method $m --tolerance 1 -o $2/render-auto-ms-by.exr -q && idiff -fail 0 -failpercent 0 -warn 0 $2/render-auto-ms.exr $2/render-auto-ms-by.exr"
+                          ${CMF} ${MICRO_SCENE} ${OUT})
+set_tests_properties(cli.render.auto-microsurface-records cli.render.auto-microsurface-renders-its-choice
+                     PROPERTIES FIXTURES_REQUIRED "cli_dirs;cli_fixtures;microsurface_scene")
 # A bad microsurface names its key and writes nothing.
 cmfilter_cli_case(NAME render.bad.microsurface-sigma-h EXIT 3
                   STDERR "microsurface-bad\\.json: /surfaces/0/material/microsurface/sigma_h: expected a number >= 0, got -0\\.008"

@@ -11,8 +11,10 @@ namespace {
 
 class DisplacementRenderer : public LayeredSurfaceRenderer {
 public:
-    DisplacementRenderer(const DisplacementDriver& driver, std::size_t surface, std::unique_ptr<DriverRenderer> base)
-        : LayeredSurfaceRenderer(surface, driver.colors, std::move(base), &driver.texture), texture_(driver.texture)
+    DisplacementRenderer(const DisplacementDriver& driver, std::size_t surface, std::unique_ptr<DriverRenderer> base,
+                         RenderMethod method)
+        : LayeredSurfaceRenderer(surface, driver.colors, std::move(base), &driver.texture, method),
+          texture_(driver.texture)
     {
     }
 
@@ -53,9 +55,11 @@ private:
 Expected<std::unique_ptr<SurfaceRenderer>> make_displacement_renderer(const DisplacementDriver& driver,
                                                                       std::size_t surface, const RenderOptions& options)
 {
-    auto base = make_base_renderer(driver.base, surface, options);
+    const RenderMethod method = layered_method(options, surface);
+    auto base = make_base_renderer(driver.base, surface, options, method);
     if (!base) return base.error();
-    return std::unique_ptr<SurfaceRenderer>(std::make_unique<DisplacementRenderer>(driver, surface, std::move(*base)));
+    return std::unique_ptr<SurfaceRenderer>(
+        std::make_unique<DisplacementRenderer>(driver, surface, std::move(*base), method));
 }
 
 }  // namespace cmfilter

@@ -35,8 +35,9 @@ HeightDirections height_directions(const Surface& surface, const SurfaceHit& h, 
 
 LayeredSurfaceRenderer::LayeredSurfaceRenderer(std::size_t surface, const MicrosurfaceColors& colors,
                                                std::unique_ptr<DriverRenderer> base,
-                                               const DisplacementTexture* displacement)
-    : surface_(surface), colors_(colors), base_(std::move(base)), displacement_(displacement)
+                                               const DisplacementTexture* displacement, RenderMethod method)
+    : surface_(surface), colors_(colors), base_(std::move(base)), displacement_(displacement),
+      heights_(height_representation(method)), slopes_(slope_representation(method))
 {
 }
 
@@ -54,6 +55,9 @@ FilteredHit LayeredSurfaceRenderer::filter(const SurfaceHit& h, const RenderCont
         footprint_probes(h.du_dx, h.dv_dx, h.du_dy, h.dv_dy, context.options.max_probes, FootprintWidth::Rms);
     const int count = probes.count;
     const double au = probes.step_u, av = probes.step_v, bu = probes.minor_u, bv = probes.minor_v;
+    MicrosurfaceLayerOptions layers = context.layers;
+    layers.heights = heights_;
+    layers.slopes = slopes_;
     FilteredHit out;
     double visibility = 0;
     Rgb shadowed;
@@ -64,8 +68,8 @@ FilteredHit LayeredSurfaceRenderer::filter(const SurfaceHit& h, const RenderCont
         MicrosurfaceFootprint f;
         ResolvedSlope slope;
         filter_piece(piece, f, slope);
-        const MicrosurfaceLayers a = microsurface_layers(colors_, f, slope, directions, context.layers,
-                                                         *context.height_table, scratch.counts, displacement_, &piece);
+        const MicrosurfaceLayers a = microsurface_layers(colors_, f, slope, directions, layers, *context.height_table,
+                                                         scratch.counts, displacement_, &piece);
         visibility += a.visibility;
         shadowed += a.shadowed;
         out.mean += a.mean;
@@ -111,12 +115,37 @@ void LayeredSurfaceRenderer::sample(const CameraRay& ray, const SurfaceHit& h, c
     pixel.distance += traced->t;
 }
 
+RenderMethod layered_method(const RenderOptions& options, std::size_t surface)
+{
+    return surface < options.microsurface_methods.size() ? options.microsurface_methods[surface] : options.method;
+}
+
+HeightRepresentation height_representation(RenderMethod method)
+{
+    switch (method) {
+    case RenderMethod::Naive: return HeightRepresentation::Naive;
+    case RenderMethod::GaussianExact: return HeightRepresentation::ExactMoments;
+    case RenderMethod::Exact: return HeightRepresentation::Exact;
+    default: return HeightRepresentation::PaperFit;
+    }
+}
+
+SlopeRepresentation slope_representation(RenderMethod method)
+{
+    switch (method) {
+    case RenderMethod::Naive: return SlopeRepresentation::Naive;
+    case RenderMethod::Exact: return SlopeRepresentation::Exact;
+    default: return SlopeRepresentation::Gaussian;
+    }
+}
+
 Expected<std::unique_ptr<DriverRenderer>> make_base_renderer(const std::shared_ptr<const Material>& base,
-                                                             std::size_t surface, const RenderOptions& options)
+                                                             std::size_t surface, const RenderOptions& options,
+                                                             RenderMethod method)
 {
     if (!base) return std::unique_ptr<DriverRenderer>();
-    return make_driver_renderer(
-        *base, surface, options.method == RenderMethod::Naive ? RenderMethod::Naive : RenderMethod::Gaussian, options);
+    return make_driver_renderer(*base, surface,
+                                method == RenderMethod::Naive ? RenderMethod::Naive : RenderMethod::Gaussian, options);
 }
 
 }  // namespace cmfilter

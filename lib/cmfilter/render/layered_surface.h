@@ -33,8 +33,10 @@ public:
 protected:
     // `displacement`: a textured displacement's own slopes and heights for
     // its slope layer (microsurface_layers); null on a Gaussian microsurface.
+    // `method`: the surface's own (layered_method), which sets how its D_h
+    // and D_s are represented for the one-ray methods.
     LayeredSurfaceRenderer(std::size_t surface, const MicrosurfaceColors& colors, std::unique_ptr<DriverRenderer> base,
-                           const DisplacementTexture* displacement);
+                           const DisplacementTexture* displacement, RenderMethod method);
 
     // The unresolved footprint over one piece and its resolved mean slope
     // (needed with a slope map).
@@ -45,15 +47,28 @@ protected:
     const MicrosurfaceColors& colors_;
     std::unique_ptr<DriverRenderer> base_;  // null: no base layer
     const DisplacementTexture* displacement_;
+    HeightRepresentation heights_;
+    SlopeRepresentation slopes_;
     // The ray-traced methods' heightfield (prepare_tracing) and
     // trace_displaced_plane's shift for it.
     std::optional<Heightfield> heightfield_;
     double heightfield_shift_ = 0;
 };
 
+// The method a layered surface renders by: its entry of
+// RenderOptions::microsurface_methods, else RenderOptions::method.
+RenderMethod layered_method(const RenderOptions& options, std::size_t surface);
+
+// How a one-ray method represents a microsurface's height filtering
+// distribution (height_filtered_albedo.h) and its slope filtering
+// distribution (microsurface_albedo.h).
+HeightRepresentation height_representation(RenderMethod method);
+SlopeRepresentation slope_representation(RenderMethod method);
+
 // The base layer's renderer (none without one), coloured naive for the
-// naive method and gaussian otherwise.
+// naive `method` (the surface's, layered_method) and gaussian otherwise.
 Expected<std::unique_ptr<DriverRenderer>> make_base_renderer(const std::shared_ptr<const Material>& base,
-                                                             std::size_t surface, const RenderOptions& options);
+                                                             std::size_t surface, const RenderOptions& options,
+                                                             RenderMethod method);
 
 }  // namespace cmfilter

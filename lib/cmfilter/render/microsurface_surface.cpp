@@ -11,8 +11,10 @@ namespace {
 
 class MicrosurfaceRenderer : public LayeredSurfaceRenderer {
 public:
-    MicrosurfaceRenderer(const MicrosurfaceDriver& driver, std::size_t surface, std::unique_ptr<DriverRenderer> base)
-        : LayeredSurfaceRenderer(surface, driver.colors, std::move(base), nullptr), surface_model_(driver.surface)
+    MicrosurfaceRenderer(const MicrosurfaceDriver& driver, std::size_t surface, std::unique_ptr<DriverRenderer> base,
+                         RenderMethod method)
+        : LayeredSurfaceRenderer(surface, driver.colors, std::move(base), nullptr, method),
+          surface_model_(driver.surface)
     {
     }
 
@@ -49,9 +51,11 @@ private:
 Expected<std::unique_ptr<SurfaceRenderer>> make_microsurface_renderer(const MicrosurfaceDriver& driver,
                                                                       std::size_t surface, const RenderOptions& options)
 {
-    auto base = make_base_renderer(driver.base, surface, options);
+    const RenderMethod method = layered_method(options, surface);
+    auto base = make_base_renderer(driver.base, surface, options, method);
     if (!base) return base.error();
-    return std::unique_ptr<SurfaceRenderer>(std::make_unique<MicrosurfaceRenderer>(driver, surface, std::move(*base)));
+    return std::unique_ptr<SurfaceRenderer>(
+        std::make_unique<MicrosurfaceRenderer>(driver, surface, std::move(*base), method));
 }
 
 }  // namespace cmfilter

@@ -56,29 +56,6 @@ void sample_positions(int count, std::uint64_t seed, std::uint64_t index, std::v
     }
 }
 
-// How a one-ray method represents a microsurface's height filtering
-// distribution (height_filtered_albedo.h).
-HeightRepresentation height_representation(RenderMethod method)
-{
-    switch (method) {
-    case RenderMethod::Naive: return HeightRepresentation::Naive;
-    case RenderMethod::GaussianExact: return HeightRepresentation::ExactMoments;
-    case RenderMethod::Exact: return HeightRepresentation::Exact;
-    default: return HeightRepresentation::PaperFit;
-    }
-}
-
-// How the one-ray methods represent a microsurface's slope filtering
-// distribution (microsurface_albedo.h).
-SlopeRepresentation slope_representation(RenderMethod method)
-{
-    switch (method) {
-    case RenderMethod::Naive: return SlopeRepresentation::Naive;
-    case RenderMethod::Exact: return SlopeRepresentation::Exact;
-    default: return SlopeRepresentation::Gaussian;
-    }
-}
-
 void store_rgb(std::vector<float>& rgb, std::size_t p, const Rgb& c)
 {
     rgb[3 * p] = static_cast<float>(c.r);
@@ -192,6 +169,7 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<Material>& 
             return bad_input("RenderOptions::noise_sub_footprints holds " + std::to_string(n) + " (expected 0 to " +
                                  std::to_string(kMaxSubFootprintCells) + ")",
                              "RenderOptions::noise_sub_footprints");
+    if (auto st = check_microsurface_methods(options.microsurface_methods); !st) return st.error();
     // One renderer per surface, for its driver's kind (surface_renderer.h).
     std::vector<std::unique_ptr<SurfaceRenderer>> surfaces;
     for (std::size_t i = 0; i < materials.size(); ++i) {
@@ -221,9 +199,9 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<Material>& 
         height_table.emplace(std::move(*table));
     }
 
+    // How D_h and D_s are represented is each layered surface's own
+    // (layered_surface.h, RenderOptions::microsurface_methods).
     MicrosurfaceLayerOptions layers;
-    layers.heights = height_representation(options.method);
-    layers.slopes = slope_representation(options.method);
     layers.masking = options.masking;
     layers.slope_shading = options.slope_shading;
     const RenderContext context{

@@ -37,6 +37,20 @@ Status check_render_samples(int samples)
     return ok();
 }
 
+Status check_microsurface_methods(const std::vector<RenderMethod>& methods)
+{
+    for (std::size_t i = 0; i < methods.size(); ++i) {
+        const RenderMethod m = methods[i];
+        if (m != RenderMethod::Naive && m != RenderMethod::Gaussian && m != RenderMethod::GaussianExact &&
+            m != RenderMethod::Exact)
+            return bad_input("RenderOptions::microsurface_methods holds " + std::string(to_string(m)) +
+                                 " for surface " + std::to_string(i) +
+                                 " (expected naive, gaussian, gaussian-exact or exact)",
+                             "RenderOptions::microsurface_methods");
+    }
+    return ok();
+}
+
 Status check_render_probes(int probes)
 {
     if (probes < 1 || probes > kMaxProbes)

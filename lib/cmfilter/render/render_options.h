@@ -67,6 +67,13 @@ struct RenderOptions {
     // index (render --method auto: chosen per material); empty, or a surface
     // past its end: `method`. Other drivers take `method`.
     std::vector<RenderMethod> texture_methods;
+    // The one-ray method of each surface with a microsurface material (a
+    // Gaussian microsurface or a textured displacement), by surface index
+    // (render --method auto: chosen per material,
+    // microsurface_method_choice.h): naive, gaussian, gaussian-exact or
+    // exact; empty, or a surface past its end: `method`. Other materials
+    // take `method`.
+    std::vector<RenderMethod> microsurface_methods;
     // Mixture, noise drivers: how many sub-footprints a footprint (or each
     // probe of one) is cut into (noise_sub_footprints.h).
     SubFootprintOptions sub_footprints;
@@ -84,6 +91,10 @@ struct RenderOptions {
 // BadInput (field RenderOptions::samples) for a sample count outside
 // 1 .. kMaxSamples: the one check of a count of rays per pixel.
 Status check_render_samples(int samples);
+
+// BadInput (field RenderOptions::microsurface_methods) for a method there
+// other than naive, gaussian, gaussian-exact or exact.
+Status check_microsurface_methods(const std::vector<RenderMethod>& methods);
 
 // BadInput (field RenderOptions::max_probes) for a probe count outside
 // 1 .. kMaxProbes.

@@ -46,7 +46,8 @@ struct RenderContext {
     const Scene& scene;
     const RenderOptions& options;
     bool supersampled = false;                        // supersample or reference
-    MicrosurfaceLayerOptions layers;                  // microsurfaces: how D_h and D_s are represented
+    MicrosurfaceLayerOptions layers;                  // microsurfaces: masking and slope shading (each layered
+                                                      // surface sets its own D_h and D_s representations)
     const HeightMomentTable* height_table = nullptr;  // D_h's exact moments; set when a microsurface is present
 };
 

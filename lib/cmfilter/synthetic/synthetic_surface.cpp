@@ -120,7 +120,7 @@ Expected<SyntheticSurface> SyntheticSurface::create(std::shared_ptr<const Scene>
         RenderOptions ro;
         ro.method = RenderMethod::Reference;  // the base layer read at points, as the reference reads it
         ro.threads = threads;
-        auto renderer = make_base_renderer(base, surface, ro);
+        auto renderer = make_base_renderer(base, surface, ro, ro.method);
         if (!renderer) return prefixed(where + "/material/base: ", renderer.error());
         s.base_ = std::shared_ptr<const DriverRenderer>(std::move(*renderer));
     }

@@ -1,0 +1,280 @@
+// SPDX-License-Identifier: Apache-2.0
+// render --method auto's choice for microsurface materials
+// (microsurface_method_choice.h), against a second computation: whole
+// frames rendered by each method through render() (the row renderer, not
+// the choice's own loop), compared pixel by pixel with the exact render over
+// the pixels each surface's centre ray hits, banded by the render's LOD AOV;
+// the choice must give the same bands, the same errors (up to the float
+// pixels' rounding) and the first method
+// whose worst band meets the tolerance. RenderOptions::microsurface_methods
+// must colour each surface by its own method, pixel for pixel as a render by
+// that method alone.
+#include "cmfilter/color/ciede2000.h"
+#include "cmfilter/render/microsurface_method_choice.h"
+#include "cmfilter/render/render.h"
+#include "cmfilter/scene/scene_loading.h"
+
+#include "slope_layer_test_support.h"
+
+#include <doctest/doctest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+using namespace cmfilter;
+using namespace cmfilter_test;
+using nlohmann::json;
+
+namespace {
+
+const std::string kLuts = std::string(CMFILTER_SOURCE_DIR) + "/luts/";
+
+// A ground plane coloured by height (sand to snow) and, behind it, a wall
+// coloured by slope steepness: two microsurfaces, with their horizon and
+// their meeting in view. `wall_z` < 0 puts the wall behind the camera.
+json two_microsurfaces(double wall_z)
+{
+    json scene = json::parse(R"({
+      "camera": {"position": [0, 0.6, 0], "look_at": [0, 0.1, 2], "up": [0, 1, 0], "fov_degrees": 55,
+                 "resolution": [40, 30]},
+      "light": {"direction": [-0.6, 0.7, -0.4], "radiance": [1, 1, 1], "ambient": [0.1, 0.1, 0.1]},
+      "background": [0.5, 0.6, 0.8],
+      "surfaces": [
+        {"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0],
+         "mapping": {"type": "planar", "u_axis": [2, 0, 0], "v_axis": [0, 0, 2]}},
+        {"type": "plane", "normal": [0, 0, -1],
+         "mapping": {"type": "planar", "u_axis": [1, 0, 0], "v_axis": [0, 1, 0]}}
+      ]})");
+    scene["surfaces"][1]["point"] = {0, 0, wall_z};
+    scene["surfaces"][0]["material"] = {
+        {"microsurface", {{"sigma_h", 0.008}, {"min_wavelength", 0.05}, {"max_wavelength", 0.4}, {"seed", 1}}},
+        {"colormap", {{"image", kLuts + "sand-snow.png"}, {"domain", {-0.024, 0.024}}}}};
+    scene["surfaces"][1]["material"] = {
+        {"microsurface", {{"sigma_h", 0.01}, {"min_wavelength", 0.05}, {"max_wavelength", 0.4}, {"seed", 4}}},
+        {"slope_colormap", {{"image", kLuts + "grass-rock.png"}, {"by", "steepness"}}}};
+    return scene;
+}
+
+struct Prepared {
+    Scene scene;
+    std::vector<Material> materials;
+};
+
+Prepared prepare(const json& text)
+{
+    auto scene = parse_scene(text.dump(), "two-microsurfaces.json");
+    REQUIRE_MESSAGE(scene, (scene ? "" : scene.error().message));
+    std::vector<Material> materials = prepared_materials(*scene, 2);
+    return {std::move(*scene), std::move(materials)};
+}
+
+RenderOptions one_ray(RenderMethod method)
+{
+    RenderOptions o;
+    o.method = method;
+    o.threads = 2;
+    o.edge_coverage = false;  // each pixel its centre ray's surface alone
+    o.surface_indices = true;
+    return o;
+}
+
+RenderedImage render_by(const Prepared& p, const RenderOptions& o)
+{
+    auto image = render(p.scene, p.materials, o);
+    REQUIRE_MESSAGE(image, (image ? "" : image.error().message));
+    return std::move(*image);
+}
+
+Rgb pixel(const RenderedImage& image, std::size_t p)
+{
+    return {image.rgb[3 * p], image.rgb[3 * p + 1], image.rgb[3 * p + 2]};
+}
+
+// Mean CIEDE2000 from `exact` per floor(LOD) band over surface s's pixels.
+struct Bands {
+    std::map<int, double> sum;
+    std::map<int, std::size_t> count;
+};
+
+Bands band_errors(const RenderedImage& image, const RenderedImage& exact, int s)
+{
+    Bands b;
+    for (std::size_t p = 0; p < image.surface.size(); ++p) {
+        if (exact.surface[p] != s) continue;
+        const int band = static_cast<int>(std::floor(exact.lod[p]));
+        b.sum[band] += ciede2000_linear_rgb(pixel(image, p), pixel(exact, p));
+        ++b.count[band];
+    }
+    return b;
+}
+
+// render() stores its pixels as float, the choice keeps doubles: the
+// errors agree to about 1e-6 CIEDE2000.
+constexpr double kFloatSlack = 1e-4;
+
+const std::vector<RenderMethod> kMethods = {RenderMethod::Naive, RenderMethod::Gaussian, RenderMethod::GaussianExact,
+                                            RenderMethod::Exact};
+
+}  // namespace
+
+TEST_CASE("each microsurface's choice measures what whole renders by each method show against exact")
+{
+    const Prepared p = prepare(two_microsurfaces(3.0));
+    const RenderedImage exact = render_by(p, one_ray(RenderMethod::Exact));
+    // The second computation: each method's worst band per surface.
+    std::vector<std::vector<Bands>> expected(2);
+    for (int s = 0; s < 2; ++s)
+        for (RenderMethod m : kMethods)
+            expected[static_cast<std::size_t>(s)].push_back(band_errors(render_by(p, one_ray(m)), exact, s));
+    const auto worst = [&](int s, std::size_t m) {
+        double w = 0;
+        const Bands& b = expected[static_cast<std::size_t>(s)][m];
+        for (const auto& [band, sum] : b.sum) w = std::max(w, sum / static_cast<double>(b.count.at(band)));
+        return w;
+    };
+    // Naive is far from exact on both, the Gaussian methods close.
+    for (int s = 0; s < 2; ++s) {
+        CHECK(worst(s, 0) > 3 * worst(s, 1));
+        CHECK(worst(s, 0) > 1);
+        CHECK(worst(s, 3) == 0);
+    }
+
+    // A tolerance above every method, one between naive and gaussian on the
+    // ground, one below both Gaussian methods there.
+    const double between = 0.5 * (worst(0, 0) + std::max(worst(0, 1), worst(0, 2)));
+    const double below = 0.5 * std::min(worst(0, 1), worst(0, 2));
+    for (double tolerance : {1000.0, between, below}) {
+        CAPTURE(tolerance);
+        MicrosurfaceChoiceOptions o;
+        o.tolerance = tolerance;
+        o.max_pixels = 40 * 30;  // every pixel
+        o.render = one_ray(RenderMethod::Gaussian);
+        auto chosen = choose_microsurface_methods(p.scene, p.materials, o);
+        REQUIRE_MESSAGE(chosen, (chosen ? "" : chosen.error().message));
+        REQUIRE(chosen->size() == 2);
+        for (int s = 0; s < 2; ++s) {
+            CAPTURE(s);
+            const SurfaceMicrosurfaceChoice& c = (*chosen)[static_cast<std::size_t>(s)];
+            CHECK(c.surface == static_cast<std::size_t>(s));
+            const auto& bands = expected[static_cast<std::size_t>(s)][0].count;
+            std::size_t seen = 0;
+            for (const auto& [band, n] : bands) seen += n;
+            CHECK(c.choice.surface_pixels == seen);
+            CHECK(c.choice.pixels == seen);
+            REQUIRE(c.choice.lods.size() == bands.size());
+            std::size_t k = 0;
+            for (const auto& [band, n] : bands) {
+                CHECK(c.choice.lods[k] == band);
+                CHECK(c.choice.band_pixels[k] == n);
+                ++k;
+            }
+            REQUIRE(c.choice.trials.size() == kMethods.size());
+            std::optional<std::size_t> first_meeting;
+            for (std::size_t m = 0; m < kMethods.size(); ++m) {
+                const MicrosurfaceTrial& t = c.choice.trials[m];
+                CHECK(t.method == kMethods[m]);
+                const Bands& b = expected[static_cast<std::size_t>(s)][m];
+                k = 0;
+                for (const auto& [band, sum] : b.sum) {
+                    CHECK(std::fabs(t.errors[k] - sum / static_cast<double>(b.count.at(band))) < kFloatSlack);
+                    ++k;
+                }
+                CHECK(std::fabs(t.worst - worst(s, m)) < kFloatSlack);
+                CHECK(t.meets == (worst(s, m) <= tolerance));
+                if (!first_meeting && worst(s, m) <= tolerance) first_meeting = m;
+            }
+            REQUIRE(first_meeting);
+            REQUIRE(c.choice.choice());
+            CHECK(c.choice.chosen == first_meeting);
+        }
+        if (tolerance == 1000.0) CHECK((*chosen)[0].choice.choice()->method == RenderMethod::Naive);
+        if (tolerance == between) CHECK((*chosen)[0].choice.choice()->method != RenderMethod::Naive);
+        if (tolerance == below) CHECK((*chosen)[0].choice.choice()->method == RenderMethod::Exact);
+    }
+}
+
+TEST_CASE("RenderOptions::microsurface_methods colours each surface by its own method")
+{
+    const Prepared p = prepare(two_microsurfaces(3.0));
+    const RenderedImage exact = render_by(p, one_ray(RenderMethod::Exact));
+    const RenderedImage naive = render_by(p, one_ray(RenderMethod::Naive));
+    RenderOptions mixed = one_ray(RenderMethod::Gaussian);
+    mixed.microsurface_methods = {RenderMethod::Exact, RenderMethod::Naive};
+    const RenderedImage both = render_by(p, mixed);
+    std::size_t on[2] = {0, 0};
+    for (std::size_t q = 0; q < both.surface.size(); ++q) {
+        const int s = both.surface[q];
+        if (s < 0) continue;
+        ++on[s];
+        const RenderedImage& by = s == 0 ? exact : naive;
+        CHECK(pixel(both, q).r == pixel(by, q).r);
+        CHECK(pixel(both, q).g == pixel(by, q).g);
+        CHECK(pixel(both, q).b == pixel(by, q).b);
+    }
+    CHECK(on[0] > 100);
+    CHECK(on[1] > 100);
+}
+
+TEST_CASE("a microsurface no pixel sees is not measured, at most max_pixels are, and a region chooses as the frame")
+{
+    const Prepared p = prepare(two_microsurfaces(-1.0));  // the wall behind the camera
+    MicrosurfaceChoiceOptions o;
+    o.tolerance = 1;
+    o.max_pixels = 50;
+    o.render = one_ray(RenderMethod::Gaussian);
+    auto chosen = choose_microsurface_methods(p.scene, p.materials, o);
+    REQUIRE_MESSAGE(chosen, (chosen ? "" : chosen.error().message));
+    REQUIRE(chosen->size() == 1);
+    CHECK((*chosen)[0].surface == 0);
+    CHECK((*chosen)[0].choice.pixels == 50);
+    CHECK((*chosen)[0].choice.surface_pixels > 50);
+    std::size_t banded = 0;
+    for (std::size_t n : (*chosen)[0].choice.band_pixels) banded += n;
+    CHECK(banded == 50);
+
+    // A region of the frame (a farm tile) makes the same choice: the whole
+    // frame is measured either way, with any thread count.
+    o.render.region = PixelRegion{0, 20, 8, 30};
+    o.render.threads = 1;
+    auto tile = choose_microsurface_methods(p.scene, p.materials, o);
+    REQUIRE(tile);
+    REQUIRE(tile->size() == 1);
+    CHECK((*tile)[0].choice.lods == (*chosen)[0].choice.lods);
+    REQUIRE((*tile)[0].choice.trials.size() == (*chosen)[0].choice.trials.size());
+    for (std::size_t m = 0; m < (*tile)[0].choice.trials.size(); ++m)
+        CHECK((*tile)[0].choice.trials[m].errors == (*chosen)[0].choice.trials[m].errors);
+    CHECK((*tile)[0].choice.chosen == (*chosen)[0].choice.chosen);
+}
+
+TEST_CASE("the microsurface choice and render refuse out-of-range options, naming the field")
+{
+    const Prepared p = prepare(two_microsurfaces(3.0));
+    const auto field_of = [&](const MicrosurfaceChoiceOptions& o) {
+        auto chosen = choose_microsurface_methods(p.scene, p.materials, o);
+        REQUIRE_FALSE(chosen);
+        CHECK(chosen.error().kind == ErrorKind::BadInput);
+        return chosen.error().field;
+    };
+    MicrosurfaceChoiceOptions o;
+    o.tolerance = 0;
+    CHECK(field_of(o) == "MicrosurfaceChoiceOptions::tolerance");
+    o.tolerance = std::nan("");
+    CHECK(field_of(o) == "MicrosurfaceChoiceOptions::tolerance");
+    o.tolerance = 1;
+    o.candidates = {RenderMethod::Gaussian, RenderMethod::Supersample};
+    CHECK(field_of(o) == "MicrosurfaceChoiceOptions::candidates");
+    o.candidates.clear();
+    o.max_pixels = 0;
+    CHECK(field_of(o) == "MicrosurfaceChoiceOptions::max_pixels");
+
+    RenderOptions r = one_ray(RenderMethod::Gaussian);
+    r.microsurface_methods = {RenderMethod::Gaussian, RenderMethod::Mixture};
+    auto image = render(p.scene, p.materials, r);
+    REQUIRE_FALSE(image);
+    CHECK(image.error().field == "RenderOptions::microsurface_methods");
+    CHECK(image.error().message.find("mixture for surface 1") != std::string::npos);
+}
