@@ -18,6 +18,7 @@
 #include "cmfilter/render/pixel_region.h"
 #include "cmfilter/render/microsurface_method_choice.h"
 #include "cmfilter/render/render_options.h"
+#include "cmfilter/render/surface_probe_choice.h"
 #include "cmfilter/render/surface_lods.h"
 #include "cmfilter/scene/material.h"
 #include "cmfilter/scene/scene.h"
@@ -228,6 +229,13 @@ void print_sub_footprint_choice(std::ostream& out, const SubFootprintChoice& cho
 // "seconds"}]}; and as a table of lines for the text report.
 nlohmann::json microsurface_choice_json(const MicrosurfaceMethodChoice& choice);
 void print_microsurface_choice(std::ostream& out, const MicrosurfaceMethodChoice& choice);
+// render --method auto: each surface's probe choice
+// (render/surface_probe_choice.h): {"tolerance", "ceiling", "pixels",
+// "surface_pixels", "lods", "band_pixels", "probes" (null when none met),
+// "trials": [{"probes", "errors", "mean", "worst", "worst_lod", "meets",
+// "seconds"}]}; and as a table of lines for the text report.
+nlohmann::json probe_choice_json(const ProbeChoice& choice);
+void print_probe_choice(std::ostream& out, const ProbeChoice& choice);
 
 // A progress callback printing "\r<command>: N%" on stderr when the percent
 // changes (a newline at 100%); callers use it only when stderr is a terminal.

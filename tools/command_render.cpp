@@ -300,6 +300,25 @@ Status run(const RenderArgs& args)
     options.texture_methods = texture_methods;
     options.noise_sub_footprints = noise_sub_footprints;
     options.microsurface_methods = microsurface_methods;
+    std::vector<SurfaceProbeChoice> probe_choices;
+    if (automatic) {
+        // Last, with each surface's method: the fewest probes that stay
+        // within --tolerance of --probes' (surface_probe_choice.h).
+        if (talk) std::cerr << "render: measuring each surface's probes for --tolerance " << *args.tolerance << "\n";
+        ProbeChoiceOptions po;
+        po.tolerance = *args.tolerance;
+        po.render = options;
+        auto probes = choose_surface_probes(*scene, *materials, po);
+        if (!probes) return probes.error();
+        probe_choices = std::move(*probes);
+        options.surface_probes.assign(materials->size(), 0);
+        for (const SurfaceProbeChoice& c : probe_choices) {
+            if (!c.choice.choice())  // the ceiling, the reference, is among the candidates
+                return bad_input("surface " + std::to_string(c.surface) + " (" + scene->path +
+                                 "): no probe count meets --tolerance " + std::to_string(*args.tolerance));
+            options.surface_probes[c.surface] = c.choice.choice()->probes;
+        }
+    }
     if (talk && isatty(STDERR_FILENO)) options.progress = terminal_progress("render");
     auto image = render(*scene, *materials, options);
     if (!image) return image.error();
@@ -326,6 +345,11 @@ Status run(const RenderArgs& args)
             layered += (layered.empty() ? "" : ", ") + std::to_string(c.surface) + ": " +
                        to_string(c.choice.choice()->method);
         a.text.push_back({"cmfilter:microsurface_methods", layered});
+        std::string probes;
+        for (const SurfaceProbeChoice& c : probe_choices)
+            probes += (probes.empty() ? "" : ", ") + std::to_string(c.surface) + ": " +
+                      std::to_string(c.choice.choice()->probes);
+        a.text.push_back({"cmfilter:surface_probes", probes});
     }
     a.numbers = {{"cmfilter:samples", static_cast<double>(image->samples)},
                  {"cmfilter:seed", static_cast<double>(args.seed)}};
@@ -369,6 +393,9 @@ Status run(const RenderArgs& args)
             for (const SurfaceMicrosurfaceChoice& c : microsurface_choices)
                 j["microsurface_methods"].push_back(
                     {{"surface", c.surface}, {"choice", microsurface_choice_json(c.choice)}});
+            j["surface_probes"] = nlohmann::json::array();
+            for (const SurfaceProbeChoice& c : probe_choices)
+                j["surface_probes"].push_back({{"surface", c.surface}, {"choice", probe_choice_json(c.choice)}});
         }
         j["samples"] = image->samples;
         j["seed"] = args.seed;
@@ -421,6 +448,11 @@ Status run(const RenderArgs& args)
             std::cout << "  surface " << c.surface << ": " << to_string(c.choice.choice()->method) << "\n";
             print_microsurface_choice(std::cout, c.choice);
         }
+        for (const SurfaceProbeChoice& c : probe_choices) {
+            const int n = c.choice.choice()->probes;
+            std::cout << "  surface " << c.surface << ": up to " << n << (n == 1 ? " probe\n" : " probes\n");
+            print_probe_choice(std::cout, c.choice);
+        }
     }
     return ok();
 }
@@ -435,7 +467,7 @@ Command setup_render(CLI::App& parent)
     app->add_option("-o,--output", args->output, "Image to write (.exr scene-linear, .png/.jpg sRGB)")->required();
     app->add_option(
            "--method", args->method,
-           "naive, gaussian, gaussian-exact (microsurfaces: D_h's exact moments), mixture (texture drivers: two Gaussians of four moments; noise drivers: a Gaussian per square of a footprint cut into up to --sub-footprints squares per axis in the transition; others as gaussian), exact (microsurfaces, or texture drivers with at most 256 values), supersample, reference, or auto (with --tolerance: each texture's and each microsurface's cheapest method and each noise's fewest sub-footprints that meet it, measured; others gaussian)")
+           "naive, gaussian, gaussian-exact (microsurfaces: D_h's exact moments), mixture (texture drivers: two Gaussians of four moments; noise drivers: a Gaussian per square of a footprint cut into up to --sub-footprints squares per axis in the transition; others as gaussian), exact (microsurfaces, or texture drivers with at most 256 values), supersample, reference, or auto (with --tolerance: each texture's and each microsurface's cheapest method, each noise's fewest sub-footprints and then each surface's fewest probes (up to --probes) that meet it, measured; others gaussian)")
         ->capture_default_str();
     app->add_option("--size,--resolution", args->size,
                     "Render at WxH instead of the scene's camera resolution (the same camera and vertical field "

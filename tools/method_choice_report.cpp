@@ -8,6 +8,7 @@
 
 #include <iomanip>
 #include <ostream>
+#include <string>
 
 namespace cmfilter::cli {
 
@@ -78,43 +79,97 @@ void print_sub_footprint_choice(std::ostream& out, const SubFootprintChoice& cho
     out.precision(precision);
 }
 
+namespace {
+
+// What both choices measured on the view report (render/view_pixels.h).
+nlohmann::json view_trial_json(const ViewTrial& t)
+{
+    return {{"errors", t.errors},       {"mean", t.mean},   {"worst", t.worst},
+            {"worst_lod", t.worst_lod}, {"meets", t.meets}, {"seconds", t.seconds}};
+}
+
+nlohmann::json view_measurement_json(const ViewMeasurement& m)
+{
+    return {{"tolerance", m.tolerance},
+            {"pixels", m.pixels},
+            {"surface_pixels", m.surface_pixels},
+            {"lods", m.lods},
+            {"band_pixels", m.band_pixels}};
+}
+
+// "  tolerance  mean CIEDE2000 from <reference> <= DE in every LOD band
+// ... (N of its M pixels):", and per trial its worst band, mean and time.
+void print_view_measurement(std::ostream& out, const ViewMeasurement& m, const std::string& reference)
+{
+    out << "  tolerance  mean CIEDE2000 from " << reference << " <= " << m.tolerance << " in every LOD band "
+        << lod_list_text(m.lods) << " (" << m.pixels << " of its " << m.surface_pixels << " pixels):\n";
+}
+
+void print_view_trial(std::ostream& out, const ViewTrial& t, bool chosen)
+{
+    out << " worst " << std::setw(7) << t.worst << " (LOD " << t.worst_lod << "), mean " << std::setw(7) << t.mean
+        << ", " << std::setw(7) << t.seconds << " s"
+        << (chosen    ? "  <- chosen"
+            : t.meets ? "  meets"
+                      : "")
+        << "\n";
+}
+
+}  // namespace
+
 nlohmann::json microsurface_choice_json(const MicrosurfaceMethodChoice& choice)
 {
     nlohmann::json trials = nlohmann::json::array();
-    for (const MicrosurfaceTrial& t : choice.trials)
-        trials.push_back({{"method", to_string(t.method)},
-                          {"errors", t.errors},
-                          {"mean", t.mean},
-                          {"worst", t.worst},
-                          {"worst_lod", t.worst_lod},
-                          {"meets", t.meets},
-                          {"seconds", t.seconds}});
-    const MicrosurfaceTrial* c = choice.choice();
-    return {{"tolerance", choice.tolerance},
-            {"pixels", choice.pixels},
-            {"surface_pixels", choice.surface_pixels},
-            {"lods", choice.lods},
-            {"band_pixels", choice.band_pixels},
-            {"method", c ? nlohmann::json(to_string(c->method)) : nlohmann::json(nullptr)},
-            {"trials", std::move(trials)}};
+    for (const MicrosurfaceTrial& t : choice.trials) {
+        nlohmann::json j = view_trial_json(t);
+        j["method"] = to_string(t.method);
+        trials.push_back(std::move(j));
+    }
+    nlohmann::json j = view_measurement_json(choice);
+    j["method"] = choice.choice() ? nlohmann::json(to_string(choice.choice()->method)) : nlohmann::json(nullptr);
+    j["trials"] = std::move(trials);
+    return j;
 }
 
 void print_microsurface_choice(std::ostream& out, const MicrosurfaceMethodChoice& choice)
 {
     const auto flags = out.flags();
     const auto precision = out.precision();
-    out << std::setprecision(3) << "  tolerance  mean CIEDE2000 from exact <= " << choice.tolerance
-        << " in every LOD band " << lod_list_text(choice.lods) << " (" << choice.pixels << " of its "
-        << choice.surface_pixels << " pixels):\n";
+    out << std::setprecision(3);
+    print_view_measurement(out, choice, "exact");
     for (std::size_t i = 0; i < choice.trials.size(); ++i) {
-        const MicrosurfaceTrial& t = choice.trials[i];
-        out << "    " << std::left << std::setw(14) << to_string(t.method) << std::right << " worst " << std::setw(7)
-            << t.worst << " (LOD " << t.worst_lod << "), mean " << std::setw(7) << t.mean << ", " << std::setw(7)
-            << t.seconds << " s"
-            << (choice.chosen == i ? "  <- chosen"
-                : t.meets          ? "  meets"
-                                   : "")
-            << "\n";
+        out << "    " << std::left << std::setw(14) << to_string(choice.trials[i].method) << std::right;
+        print_view_trial(out, choice.trials[i], choice.chosen == i);
+    }
+    out.flags(flags);
+    out.precision(precision);
+}
+
+nlohmann::json probe_choice_json(const ProbeChoice& choice)
+{
+    nlohmann::json trials = nlohmann::json::array();
+    for (const ProbeTrial& t : choice.trials) {
+        nlohmann::json j = view_trial_json(t);
+        j["probes"] = t.probes;
+        trials.push_back(std::move(j));
+    }
+    nlohmann::json j = view_measurement_json(choice);
+    j["ceiling"] = choice.ceiling;
+    j["probes"] = choice.choice() ? nlohmann::json(choice.choice()->probes) : nlohmann::json(nullptr);
+    j["trials"] = std::move(trials);
+    return j;
+}
+
+void print_probe_choice(std::ostream& out, const ProbeChoice& choice)
+{
+    const auto flags = out.flags();
+    const auto precision = out.precision();
+    out << std::setprecision(3);
+    print_view_measurement(out, choice, std::to_string(choice.ceiling) + " probes");
+    for (std::size_t i = 0; i < choice.trials.size(); ++i) {
+        const ProbeTrial& t = choice.trials[i];
+        out << "    up to " << std::setw(2) << t.probes << (t.probes == 1 ? " probe, " : " probes,");
+        print_view_trial(out, t, choice.chosen == i);
     }
     out.flags(flags);
     out.precision(precision);

@@ -51,8 +51,8 @@ FilteredHit LayeredSurfaceRenderer::filter(const SurfaceHit& h, const RenderCont
     std::optional<Rgb> base;
     if (base_ && !context.supersampled) base = base_->filter(h, context, scratch).albedo;
 
-    const FootprintProbes probes =
-        footprint_probes(h.du_dx, h.dv_dx, h.du_dy, h.dv_dy, context.options.max_probes, FootprintWidth::Rms);
+    const FootprintProbes probes = footprint_probes(h.du_dx, h.dv_dx, h.du_dy, h.dv_dy,
+                                                    max_probes_of(context.options, surface_), FootprintWidth::Rms);
     const int count = probes.count;
     const double au = probes.step_u, av = probes.step_v, bu = probes.minor_u, bv = probes.minor_v;
     MicrosurfaceLayerOptions layers = context.layers;

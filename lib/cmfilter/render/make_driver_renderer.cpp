@@ -13,7 +13,8 @@ Expected<std::unique_ptr<DriverRenderer>> make_driver_renderer(const Material& m
                                                                RenderMethod colour_method, const RenderOptions& options)
 {
     if (const auto* noise = std::get_if<NoiseDriver>(&material.driver))
-        return make_noise_renderer(material.color, *noise, surface, colour_method, options.sub_footprints);
+        return make_noise_renderer(material.color, *noise, surface, colour_method, options.sub_footprints,
+                                   max_probes_of(options, surface));
     if (const auto* texture = std::get_if<TextureDriver>(&material.driver))
         return make_texture_renderer(material, *texture, surface, colour_method, options);
     return bad_input("render: surface " + std::to_string(surface) +

@@ -35,7 +35,8 @@ Expected<std::unique_ptr<SurfaceRenderer>> make_surface_renderer(const Material&
                 SubFootprintOptions squares = options.sub_footprints;
                 if (chosen > 0) squares.max_cells = chosen;
                 return as_renderer<DriverRenderer, SurfaceRenderer>(make_noise_renderer(
-                    material.color, driver, surface, chosen > 0 ? RenderMethod::Mixture : options.method, squares));
+                    material.color, driver, surface, chosen > 0 ? RenderMethod::Mixture : options.method, squares,
+                    max_probes_of(options, surface)));
             } else if constexpr (std::is_same_v<Driver, TextureDriver>)
                 return as_renderer<DriverRenderer, SurfaceRenderer>(make_texture_renderer(
                     material, driver, surface,

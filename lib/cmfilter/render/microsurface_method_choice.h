@@ -24,6 +24,7 @@
 #pragma once
 
 #include "cmfilter/render/render_options.h"
+#include "cmfilter/render/view_pixels.h"
 #include "cmfilter/scene/scene.h"
 #include "cmfilter/scene/scene_materials.h"
 #include "cmfilter/util/error.h"
@@ -47,27 +48,15 @@ struct MicrosurfaceChoiceOptions {
     RenderOptions render;
 };
 
-struct MicrosurfaceTrial {
+struct MicrosurfaceTrial : ViewTrial {
     RenderMethod method = RenderMethod::Gaussian;
-    std::vector<double> errors;  // mean CIEDE2000 per LOD band (MicrosurfaceMethodChoice::lods)
-    double mean = 0;             // over every measured pixel
-    double worst = 0;            // the largest of `errors`
-    double worst_lod = 0;        // its band
-    double seconds = 0;          // wall time to colour the measured pixels
-    bool meets = false;
 };
 
-struct MicrosurfaceMethodChoice {
-    double tolerance = 0;
-    std::size_t surface_pixels = 0;  // the frame's pixels whose centre ray hits the surface
-    std::size_t pixels = 0;          // of those, measured
-    std::vector<double> lods;        // each band's least LOD: band [L, L + 1)
-    std::vector<std::size_t> band_pixels;
+struct MicrosurfaceMethodChoice : ViewMeasurement {
     std::vector<MicrosurfaceTrial> trials;  // in the order tried
     std::optional<std::size_t> chosen;      // the first that meets; none when none does
 
     const MicrosurfaceTrial* choice() const { return chosen ? &trials[*chosen] : nullptr; }
-    const MicrosurfaceTrial* best() const;  // the lowest worst error
 };
 
 struct SurfaceMicrosurfaceChoice {

@@ -15,8 +15,8 @@ namespace {
 class NoiseRenderer : public DriverRenderer {
 public:
     NoiseRenderer(const ColorLayer& color, const FilteredNoise& noise, RenderMethod method,
-                  const SubFootprintOptions& squares)
-        : color_(color), noise_(noise), method_(method), squares_(squares)
+                  const SubFootprintOptions& squares, int max_probes)
+        : color_(color), noise_(noise), method_(method), squares_(squares), max_probes_(max_probes)
     {
     }
 
@@ -25,11 +25,11 @@ public:
         const RenderOptions& options = context.options;
         const bool colour = !context.supersampled;
         FilteredHit out;
-        if (options.max_probes > 1) {
+        if (max_probes_ > 1) {
             // Over an anisotropic footprint: probes along its major edge
             // (anisotropic_probes.h), colours averaged.
             const FootprintProbes probes =
-                footprint_probes(h.du_dx, h.dv_dx, h.du_dy, h.dv_dy, options.max_probes, options.footprint);
+                footprint_probes(h.du_dx, h.dv_dx, h.du_dy, h.dv_dy, max_probes_, options.footprint);
             // Each probe's piece of the parallelogram, for mixture's squares.
             const FootprintEdges piece{probes.step_u / probes.count, probes.step_v / probes.count, probes.minor_u,
                                        probes.minor_v};
@@ -90,20 +90,21 @@ private:
     const FilteredNoise& noise_;
     RenderMethod method_;
     SubFootprintOptions squares_;
+    int max_probes_;  // the surface's (max_probes_of)
 };
 
 }  // namespace
 
 Expected<std::unique_ptr<DriverRenderer>> make_noise_renderer(const ColorLayer& color, const NoiseDriver& driver,
                                                               std::size_t surface, RenderMethod colour_method,
-                                                              const SubFootprintOptions& squares)
+                                                              const SubFootprintOptions& squares, int max_probes)
 {
     if (colour_method == RenderMethod::Exact)
         return bad_input("render: surface " + std::to_string(surface) + ": exact needs a texture driver with at most " +
                          std::to_string(kHistogramMaxValues) +
                          " distinct values; noise drivers have no exact filtering distribution");
     return std::unique_ptr<DriverRenderer>(
-        std::make_unique<NoiseRenderer>(color, driver.noise, colour_method, squares));
+        std::make_unique<NoiseRenderer>(color, driver.noise, colour_method, squares, max_probes));
 }
 
 }  // namespace cmfilter

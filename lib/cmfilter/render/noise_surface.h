@@ -17,6 +17,6 @@ namespace cmfilter {
 // `squares`: mixture's sub-footprints (checked by the caller).
 Expected<std::unique_ptr<DriverRenderer>> make_noise_renderer(const ColorLayer& color, const NoiseDriver& driver,
                                                               std::size_t surface, RenderMethod colour_method,
-                                                              const SubFootprintOptions& squares);
+                                                              const SubFootprintOptions& squares, int max_probes);
 
 }  // namespace cmfilter

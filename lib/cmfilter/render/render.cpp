@@ -170,6 +170,7 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<Material>& 
                                  std::to_string(kMaxSubFootprintCells) + ")",
                              "RenderOptions::noise_sub_footprints");
     if (auto st = check_microsurface_methods(options.microsurface_methods); !st) return st.error();
+    if (auto st = check_surface_probes(options.surface_probes); !st) return st.error();
     // One renderer per surface, for its driver's kind (surface_renderer.h).
     std::vector<std::unique_ptr<SurfaceRenderer>> surfaces;
     for (std::size_t i = 0; i < materials.size(); ++i) {

@@ -60,4 +60,21 @@ Status check_render_probes(int probes)
     return ok();
 }
 
+Status check_surface_probes(const std::vector<int>& probes)
+{
+    for (std::size_t i = 0; i < probes.size(); ++i)
+        if (probes[i] < 0 || probes[i] > kMaxProbes)
+            return bad_input("RenderOptions::surface_probes holds " + std::to_string(probes[i]) + " for surface " +
+                                 std::to_string(i) + " (expected 0 to " + std::to_string(kMaxProbes) + ")",
+                             "RenderOptions::surface_probes");
+    return ok();
+}
+
+int max_probes_of(const RenderOptions& options, std::size_t surface)
+{
+    return surface < options.surface_probes.size() && options.surface_probes[surface] > 0
+               ? options.surface_probes[surface]
+               : options.max_probes;
+}
+
 }  // namespace cmfilter

@@ -82,6 +82,11 @@ struct RenderOptions {
     // renders that surface by mixture with it (1: as gaussian); empty, 0 or
     // past its end: `method` with `sub_footprints`.
     std::vector<int> noise_sub_footprints;
+    // The most probes of each surface's footprints, by surface index
+    // (render --method auto: chosen per surface, surface_probe_choice.h);
+    // 0, or a surface past its end: max_probes. A surface's base layer and
+    // its pieces on edges take its own.
+    std::vector<int> surface_probes;
     // Also fill RenderedImage::surface (which surface each pixel's centre ray
     // hits): what surface_lod_ranges (surface_lods.h) needs.
     bool surface_indices = false;
@@ -99,5 +104,13 @@ Status check_microsurface_methods(const std::vector<RenderMethod>& methods);
 // BadInput (field RenderOptions::max_probes) for a probe count outside
 // 1 .. kMaxProbes.
 Status check_render_probes(int probes);
+
+// BadInput (field RenderOptions::surface_probes) for a count there outside
+// 0 .. kMaxProbes.
+Status check_surface_probes(const std::vector<int>& probes);
+
+// The most probes of surface `surface`'s footprints: its entry of
+// surface_probes when > 0, else max_probes.
+int max_probes_of(const RenderOptions& options, std::size_t surface);
 
 }  // namespace cmfilter

@@ -26,8 +26,8 @@ TextureColor texture_color(RenderMethod method)
 class TextureRenderer : public DriverRenderer {
 public:
     TextureRenderer(const ColorLayer& color, const TextureDriver& driver, RenderMethod method,
-                    std::vector<Rgb> bin_colors)
-        : color_(color), driver_(driver), method_(method), bin_colors_(std::move(bin_colors))
+                    std::vector<Rgb> bin_colors, int max_probes)
+        : color_(color), driver_(driver), method_(method), bin_colors_(std::move(bin_colors)), max_probes_(max_probes)
     {
     }
 
@@ -35,10 +35,10 @@ public:
     {
         // Its pyramids looked up by probes along the footprint's major edge
         // (texture_footprint.h); supersampled pixels take only the AOVs.
-        const TextureFootprint f = filter_texture_footprint(
-            color_, driver_.texture, driver_.histograms ? &*driver_.histograms : nullptr, h,
-            context.supersampled ? TextureColor::None : texture_color(method_), context.options.footprint,
-            context.options.max_probes, bin_colors_, scratch.weights);
+        const TextureFootprint f =
+            filter_texture_footprint(color_, driver_.texture, driver_.histograms ? &*driver_.histograms : nullptr, h,
+                                     context.supersampled ? TextureColor::None : texture_color(method_),
+                                     context.options.footprint, max_probes_, bin_colors_, scratch.weights);
         scratch.counts.footprints += f.counts.footprints;
         scratch.counts.plain += f.counts.plain;
         return {f.albedo, f.mean, f.sigma, f.lod};
@@ -51,6 +51,7 @@ private:
     const TextureDriver& driver_;
     RenderMethod method_;
     std::vector<Rgb> bin_colors_;  // exact: C0 at the histogram's distinct values
+    int max_probes_;
 };
 
 }  // namespace
@@ -80,8 +81,8 @@ Expected<std::unique_ptr<DriverRenderer>> make_texture_renderer(const Material& 
                              ": exact needs the texture's histogram pyramid (MaterialOptions::histograms)");
         for (double v : driver.histograms->info().values) bin_colors.push_back(material.color.map.evaluate(v));
     }
-    return std::unique_ptr<DriverRenderer>(
-        std::make_unique<TextureRenderer>(material.color, driver, colour_method, std::move(bin_colors)));
+    return std::unique_ptr<DriverRenderer>(std::make_unique<TextureRenderer>(
+        material.color, driver, colour_method, std::move(bin_colors), max_probes_of(options, surface)));
 }
 
 }  // namespace cmfilter

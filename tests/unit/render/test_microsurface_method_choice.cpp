@@ -9,19 +9,15 @@
 // whose worst band meets the tolerance. RenderOptions::microsurface_methods
 // must colour each surface by its own method, pixel for pixel as a render by
 // that method alone.
-#include "cmfilter/color/ciede2000.h"
 #include "cmfilter/render/microsurface_method_choice.h"
-#include "cmfilter/render/render.h"
-#include "cmfilter/scene/scene_loading.h"
 
-#include "slope_layer_test_support.h"
+#include "view_choice_test_support.h"
 
 #include <doctest/doctest.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <string>
 #include <vector>
 
@@ -59,63 +55,6 @@ json two_microsurfaces(double wall_z)
     return scene;
 }
 
-struct Prepared {
-    Scene scene;
-    std::vector<Material> materials;
-};
-
-Prepared prepare(const json& text)
-{
-    auto scene = parse_scene(text.dump(), "two-microsurfaces.json");
-    REQUIRE_MESSAGE(scene, (scene ? "" : scene.error().message));
-    std::vector<Material> materials = prepared_materials(*scene, 2);
-    return {std::move(*scene), std::move(materials)};
-}
-
-RenderOptions one_ray(RenderMethod method)
-{
-    RenderOptions o;
-    o.method = method;
-    o.threads = 2;
-    o.edge_coverage = false;  // each pixel its centre ray's surface alone
-    o.surface_indices = true;
-    return o;
-}
-
-RenderedImage render_by(const Prepared& p, const RenderOptions& o)
-{
-    auto image = render(p.scene, p.materials, o);
-    REQUIRE_MESSAGE(image, (image ? "" : image.error().message));
-    return std::move(*image);
-}
-
-Rgb pixel(const RenderedImage& image, std::size_t p)
-{
-    return {image.rgb[3 * p], image.rgb[3 * p + 1], image.rgb[3 * p + 2]};
-}
-
-// Mean CIEDE2000 from `exact` per floor(LOD) band over surface s's pixels.
-struct Bands {
-    std::map<int, double> sum;
-    std::map<int, std::size_t> count;
-};
-
-Bands band_errors(const RenderedImage& image, const RenderedImage& exact, int s)
-{
-    Bands b;
-    for (std::size_t p = 0; p < image.surface.size(); ++p) {
-        if (exact.surface[p] != s) continue;
-        const int band = static_cast<int>(std::floor(exact.lod[p]));
-        b.sum[band] += ciede2000_linear_rgb(pixel(image, p), pixel(exact, p));
-        ++b.count[band];
-    }
-    return b;
-}
-
-// render() stores its pixels as float, the choice keeps doubles: the
-// errors agree to about 1e-6 CIEDE2000.
-constexpr double kFloatSlack = 1e-4;
-
 const std::vector<RenderMethod> kMethods = {RenderMethod::Naive, RenderMethod::Gaussian, RenderMethod::GaussianExact,
                                             RenderMethod::Exact};
 
@@ -123,19 +62,14 @@ const std::vector<RenderMethod> kMethods = {RenderMethod::Naive, RenderMethod::G
 
 TEST_CASE("each microsurface's choice measures what whole renders by each method show against exact")
 {
-    const Prepared p = prepare(two_microsurfaces(3.0));
-    const RenderedImage exact = render_by(p, one_ray(RenderMethod::Exact));
+    const PreparedScene p = prepare_scene(two_microsurfaces(3.0), "two-microsurfaces.json");
+    const RenderedImage exact = render_scene(p, one_ray_options(RenderMethod::Exact));
     // The second computation: each method's worst band per surface.
-    std::vector<std::vector<Bands>> expected(2);
+    std::vector<std::vector<BandSums>> expected(2);
     for (int s = 0; s < 2; ++s)
         for (RenderMethod m : kMethods)
-            expected[static_cast<std::size_t>(s)].push_back(band_errors(render_by(p, one_ray(m)), exact, s));
-    const auto worst = [&](int s, std::size_t m) {
-        double w = 0;
-        const Bands& b = expected[static_cast<std::size_t>(s)][m];
-        for (const auto& [band, sum] : b.sum) w = std::max(w, sum / static_cast<double>(b.count.at(band)));
-        return w;
-    };
+            expected[static_cast<std::size_t>(s)].push_back(band_sums(render_scene(p, one_ray_options(m)), exact, s));
+    const auto worst = [&](int s, std::size_t m) { return expected[static_cast<std::size_t>(s)][m].worst(); };
     // Naive is far from exact on both, the Gaussian methods close.
     for (int s = 0; s < 2; ++s) {
         CHECK(worst(s, 0) > 3 * worst(s, 1));
@@ -152,7 +86,7 @@ TEST_CASE("each microsurface's choice measures what whole renders by each method
         MicrosurfaceChoiceOptions o;
         o.tolerance = tolerance;
         o.max_pixels = 40 * 30;  // every pixel
-        o.render = one_ray(RenderMethod::Gaussian);
+        o.render = one_ray_options(RenderMethod::Gaussian);
         auto chosen = choose_microsurface_methods(p.scene, p.materials, o);
         REQUIRE_MESSAGE(chosen, (chosen ? "" : chosen.error().message));
         REQUIRE(chosen->size() == 2);
@@ -177,12 +111,9 @@ TEST_CASE("each microsurface's choice measures what whole renders by each method
             for (std::size_t m = 0; m < kMethods.size(); ++m) {
                 const MicrosurfaceTrial& t = c.choice.trials[m];
                 CHECK(t.method == kMethods[m]);
-                const Bands& b = expected[static_cast<std::size_t>(s)][m];
+                const BandSums& b = expected[static_cast<std::size_t>(s)][m];
                 k = 0;
-                for (const auto& [band, sum] : b.sum) {
-                    CHECK(std::fabs(t.errors[k] - sum / static_cast<double>(b.count.at(band))) < kFloatSlack);
-                    ++k;
-                }
+                for (const auto& entry : b.sum) CHECK(std::fabs(t.errors[k++] - b.mean(entry.first)) < kFloatSlack);
                 CHECK(std::fabs(t.worst - worst(s, m)) < kFloatSlack);
                 CHECK(t.meets == (worst(s, m) <= tolerance));
                 if (!first_meeting && worst(s, m) <= tolerance) first_meeting = m;
@@ -199,21 +130,21 @@ TEST_CASE("each microsurface's choice measures what whole renders by each method
 
 TEST_CASE("RenderOptions::microsurface_methods colours each surface by its own method")
 {
-    const Prepared p = prepare(two_microsurfaces(3.0));
-    const RenderedImage exact = render_by(p, one_ray(RenderMethod::Exact));
-    const RenderedImage naive = render_by(p, one_ray(RenderMethod::Naive));
-    RenderOptions mixed = one_ray(RenderMethod::Gaussian);
+    const PreparedScene p = prepare_scene(two_microsurfaces(3.0), "two-microsurfaces.json");
+    const RenderedImage exact = render_scene(p, one_ray_options(RenderMethod::Exact));
+    const RenderedImage naive = render_scene(p, one_ray_options(RenderMethod::Naive));
+    RenderOptions mixed = one_ray_options(RenderMethod::Gaussian);
     mixed.microsurface_methods = {RenderMethod::Exact, RenderMethod::Naive};
-    const RenderedImage both = render_by(p, mixed);
+    const RenderedImage both = render_scene(p, mixed);
     std::size_t on[2] = {0, 0};
     for (std::size_t q = 0; q < both.surface.size(); ++q) {
         const int s = both.surface[q];
         if (s < 0) continue;
         ++on[s];
         const RenderedImage& by = s == 0 ? exact : naive;
-        CHECK(pixel(both, q).r == pixel(by, q).r);
-        CHECK(pixel(both, q).g == pixel(by, q).g);
-        CHECK(pixel(both, q).b == pixel(by, q).b);
+        CHECK(pixel_rgb(both, q).r == pixel_rgb(by, q).r);
+        CHECK(pixel_rgb(both, q).g == pixel_rgb(by, q).g);
+        CHECK(pixel_rgb(both, q).b == pixel_rgb(by, q).b);
     }
     CHECK(on[0] > 100);
     CHECK(on[1] > 100);
@@ -221,11 +152,12 @@ TEST_CASE("RenderOptions::microsurface_methods colours each surface by its own m
 
 TEST_CASE("a microsurface no pixel sees is not measured, at most max_pixels are, and a region chooses as the frame")
 {
-    const Prepared p = prepare(two_microsurfaces(-1.0));  // the wall behind the camera
+    const PreparedScene p =
+        prepare_scene(two_microsurfaces(-1.0), "two-microsurfaces.json");  // the wall behind the camera
     MicrosurfaceChoiceOptions o;
     o.tolerance = 1;
     o.max_pixels = 50;
-    o.render = one_ray(RenderMethod::Gaussian);
+    o.render = one_ray_options(RenderMethod::Gaussian);
     auto chosen = choose_microsurface_methods(p.scene, p.materials, o);
     REQUIRE_MESSAGE(chosen, (chosen ? "" : chosen.error().message));
     REQUIRE(chosen->size() == 1);
@@ -252,7 +184,7 @@ TEST_CASE("a microsurface no pixel sees is not measured, at most max_pixels are,
 
 TEST_CASE("the microsurface choice and render refuse out-of-range options, naming the field")
 {
-    const Prepared p = prepare(two_microsurfaces(3.0));
+    const PreparedScene p = prepare_scene(two_microsurfaces(3.0), "two-microsurfaces.json");
     const auto field_of = [&](const MicrosurfaceChoiceOptions& o) {
         auto chosen = choose_microsurface_methods(p.scene, p.materials, o);
         REQUIRE_FALSE(chosen);
@@ -271,7 +203,7 @@ TEST_CASE("the microsurface choice and render refuse out-of-range options, namin
     o.max_pixels = 0;
     CHECK(field_of(o) == "MicrosurfaceChoiceOptions::max_pixels");
 
-    RenderOptions r = one_ray(RenderMethod::Gaussian);
+    RenderOptions r = one_ray_options(RenderMethod::Gaussian);
     r.microsurface_methods = {RenderMethod::Gaussian, RenderMethod::Mixture};
     auto image = render(p.scene, p.materials, r);
     REQUIRE_FALSE(image);
