@@ -32,7 +32,8 @@ void bind_render(py::module_& m)
            std::optional<std::tuple<int, int, int, int>> region, int samples, std::uint64_t seed, int probes,
            int sub_footprints, const std::string& footprint, bool edge_coverage, std::optional<double> tolerance,
            std::optional<double> shortcut, const std::string& masking, const std::string& slope_shading, bool aovs,
-           const std::string& ocio_config, int threads) -> py::object {
+           const std::string& ocio_config, int threads, const std::vector<std::string>& microsurface_methods,
+           const std::vector<int>& surface_probes) -> py::object {
             RenderOptions options;
             options.method = unwrap(parse_render_method(method));
             options.footprint = unwrap(parse_footprint_width(footprint));
@@ -51,6 +52,11 @@ void bind_render(py::module_& m)
                                                                   : SlopeShading::Uncorrelated;
             options.threads = threads;
             options.surface_indices = aovs;
+            for (const std::string& m : microsurface_methods)
+                options.microsurface_methods.push_back(unwrap(parse_render_method(m)));
+            check(check_microsurface_methods(options.microsurface_methods));
+            options.surface_probes = surface_probes;
+            check(check_surface_probes(options.surface_probes));
             MaterialOptions material_options;
             material_options.threads = threads;
             set_method_materials(options.method, material_options);
@@ -100,9 +106,13 @@ void bind_render(py::module_& m)
         py::arg("edge_coverage") = true, py::arg("tolerance") = py::none(), py::arg("shortcut") = py::none(),
         py::arg("masking") = "correlated", py::arg("slope_shading") = "correlated", py::arg("aovs") = false,
         py::arg("ocio_config") = "", py::arg("threads") = 0,
+        py::arg("microsurface_methods") = std::vector<std::string>{}, py::arg("surface_probes") = std::vector<int>{},
         "Renders a scene file (docs/scene-format.md) by naive, gaussian, gaussian-exact, mixture, exact, supersample "
-        "or reference, as `cmfilter render` (sub_footprints: mixture's most squares per axis for noise drivers): (H, W, 3) float32 scene-linear, or with aovs=True a dict of it (rgb) "
-        "and the per-pixel hit, distance, mean, sigma, lod and surface (the index of the surface hit, -1 for none).");
+        "or reference, as `cmfilter render` (sub_footprints: mixture's most squares per axis for noise drivers; "
+        "microsurface_methods: by surface index, each microsurface's own one-ray method, as --method auto records "
+        "them; surface_probes: by surface index, each surface's most probes, 0 for `probes`): (H, W, 3) float32 "
+        "scene-linear, or with aovs=True a dict of it (rgb) and the per-pixel hit, distance, mean, sigma, lod and "
+        "surface (the index of the surface hit, -1 for none).");
 }
 
 }  // namespace cmfilter::python

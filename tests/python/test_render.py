@@ -2,6 +2,7 @@
 # render to an array against the cmfilter command's own render of the same
 # scene, its EXR read by OpenImageIO's oiiotool (converted to a float TIFF)
 # and tifffile, never by the module.
+import re
 import shutil
 
 import numpy as np
@@ -71,3 +72,28 @@ def test_render_mixture_sub_footprints(cli, source_dir, tmp_path):
     with pytest.raises(cmfilter.Error, match=r"SubFootprintOptions::max_cells 17 is out of range") as e:
         cmfilter.render(str(scene), method="mixture", sub_footprints=17)
     assert e.value.field == "SubFootprintOptions::max_cells"
+
+
+def test_render_per_surface_choices_equal_the_commands_auto(cli, source_dir, tmp_path):
+    # The bundled microsurface by the command's --method auto, and by the
+    # module with the method and probe count that render recorded for it,
+    # pixel for pixel; bad per-surface choices named by their fields.
+    oiiotool = shutil.which("oiiotool")
+    if not oiiotool:
+        pytest.skip("oiiotool is not installed")
+    scene = source_dir / "examples/scenes/plane-microsurface-sand-snow.json"
+    exr, tif = tmp_path / "auto.exr", tmp_path / "auto.tif"
+    run(cli, "render", scene, "--method", "auto", "--tolerance", "1", "--size", "24x16", "-o", exr, "--quiet")
+    info = run(oiiotool, "--info", "-v", exr).stdout
+    method = re.search(r'cmfilter:microsurface_methods: "0: ([a-z-]+)"', info).group(1)
+    probes = int(re.search(r'cmfilter:surface_probes: "0: ([0-9]+)"', info).group(1))
+    run(oiiotool, exr, "-d", "float", "--compression", "none", "-o", tif)
+    image = cmfilter.render(str(scene), method="gaussian", size=(24, 16), tolerance=1.0,
+                            microsurface_methods=[method], surface_probes=[probes])
+    np.testing.assert_array_equal(image, tifffile.imread(tif)[..., :3])
+    with pytest.raises(cmfilter.Error, match=r"supersample for surface 0") as e:
+        cmfilter.render(str(scene), size=(8, 8), microsurface_methods=["supersample"])
+    assert e.value.field == "RenderOptions::microsurface_methods"
+    with pytest.raises(cmfilter.Error, match=r"65 for surface 0") as e:
+        cmfilter.render(str(scene), size=(8, 8), surface_probes=[65])
+    assert e.value.field == "RenderOptions::surface_probes"
