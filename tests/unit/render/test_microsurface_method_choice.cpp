@@ -150,7 +150,8 @@ TEST_CASE("RenderOptions::microsurface_methods colours each surface by its own m
     CHECK(on[1] > 100);
 }
 
-TEST_CASE("a microsurface no pixel sees is not measured, at most max_pixels are, and a region chooses as the frame")
+TEST_CASE(
+    "a microsurface no pixel sees is not measured, at most max_pixels are, and a tile on one thread chooses as the frame on two threads")
 {
     const PreparedScene p =
         prepare_scene(two_microsurfaces(-1.0), "two-microsurfaces.json");  // the wall behind the camera
