@@ -150,8 +150,7 @@ TEST_CASE("RenderOptions::microsurface_methods colours each surface by its own m
     CHECK(on[1] > 100);
 }
 
-TEST_CASE(
-    "a microsurface no pixel sees is not measured, at most max_pixels are, and a tile on one thread chooses as the frame on two threads")
+TEST_CASE("microsurface choice: a tile on one thread chooses as the frame on two, unseen surfaces left out")
 {
     const PreparedScene p =
         prepare_scene(two_microsurfaces(-1.0), "two-microsurfaces.json");  // the wall behind the camera
