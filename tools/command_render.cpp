@@ -131,6 +131,17 @@ FieldFlags render_flags()
     return flags;
 }
 
+// --method auto's choices as one metadata value, "0: mixture, 2: naive":
+// each chosen surface's index and `value` of its choice.
+template <typename Choices, typename Value>
+std::string surface_list(const Choices& choices, Value value)
+{
+    std::string list;
+    for (const auto& c : choices)
+        list += (list.empty() ? "" : ", ") + std::to_string(c.surface) + ": " + value(*c.choice.choice());
+    return list;
+}
+
 Status run(const RenderArgs& args)
 {
     if (auto st = check_rgb_image_output(args.output); !st) return st;
@@ -329,27 +340,14 @@ Status run(const RenderArgs& args)
               {"cmfilter:scene", path_for_record(scene->path, args.output)},
               {"cmfilter:method", automatic ? "auto" : to_string(image->method)},
               {"cmfilter:footprint", to_string(options.footprint)}};
-    if (automatic) {  // "0: mixture, 2: naive": each texture surface's method
-        std::string chosen;
-        for (const SurfaceMethodChoice& c : choices)
-            chosen += (chosen.empty() ? "" : ", ") + std::to_string(c.surface) + ": " +
-                      to_string(c.choice.choice()->method);
-        a.text.push_back({"cmfilter:texture_methods", chosen});
-        std::string squares;
-        for (const SurfaceSubFootprintChoice& c : noise_choices)
-            squares += (squares.empty() ? "" : ", ") + std::to_string(c.surface) + ": " +
-                       std::to_string(c.choice.choice()->max_cells);
-        a.text.push_back({"cmfilter:noise_sub_footprints", squares});
-        std::string layered;
-        for (const SurfaceMicrosurfaceChoice& c : microsurface_choices)
-            layered += (layered.empty() ? "" : ", ") + std::to_string(c.surface) + ": " +
-                       to_string(c.choice.choice()->method);
-        a.text.push_back({"cmfilter:microsurface_methods", layered});
-        std::string probes;
-        for (const SurfaceProbeChoice& c : probe_choices)
-            probes += (probes.empty() ? "" : ", ") + std::to_string(c.surface) + ": " +
-                      std::to_string(c.choice.choice()->probes);
-        a.text.push_back({"cmfilter:surface_probes", probes});
+    if (automatic) {  // each surface's choices
+        const auto method_name = [](const auto& t) { return std::string(to_string(t.method)); };
+        a.text.push_back({"cmfilter:texture_methods", surface_list(choices, method_name)});
+        a.text.push_back({"cmfilter:noise_sub_footprints",
+                          surface_list(noise_choices, [](const auto& t) { return std::to_string(t.max_cells); })});
+        a.text.push_back({"cmfilter:microsurface_methods", surface_list(microsurface_choices, method_name)});
+        a.text.push_back({"cmfilter:surface_probes",
+                          surface_list(probe_choices, [](const auto& t) { return std::to_string(t.probes); })});
     }
     a.numbers = {{"cmfilter:samples", static_cast<double>(image->samples)},
                  {"cmfilter:seed", static_cast<double>(args.seed)}};
