@@ -6,6 +6,7 @@
 
 #include "cmfilter/ops/filtered_image.h"
 #include "cmfilter/ops/method_choice.h"
+#include "cmfilter/ops/table_color_pyramid.h"
 #include "cmfilter/ops/image_comparison.h"
 
 #include <pybind11/stl.h>
@@ -124,14 +125,49 @@ void bind_ops(py::module_& m)
         py::arg("width") = 0, py::arg("height") = 0, py::arg("colormap") = "", py::arg("driver") = "",
         py::arg("histograms") = "", py::arg("ocio_config") = "", py::arg("threads") = 0,
         "The filtered image of a moment pyramid's driver through a table's colour map at level of detail lod, by "
-        "naive, gaussian, mixture (an order-4 pyramid), exact or reference (as `cmfilter apply`): (H, W, 3) float32 scene-linear; warnings "
+        "naive, gaussian, mixture (an order-4 pyramid), exact, color-pyramid (moments names a colour pyramid, "
+        "bake_color_pyramid) or reference (as `cmfilter apply`): (H, W, 3) float32 scene-linear; warnings "
         "(a clamped lod, lookups outside the table) as Python warnings.");
+
+    m.def(
+        "bake_color_pyramid",
+        [](const std::string& driver, const std::string& output, const std::string& table, const std::string& colormap,
+           const std::string& channel, const std::string& wrap, const std::string& nonfinite,
+           const std::string& pixel_type, const std::string& ocio_config, int threads) {
+        TableColorPyramidOptions options;
+        set_pyramid_bake_options(options.bake, driver, output, channel, wrap, nonfinite, threads);
+        options.bake.storage.pixel_type = unwrap(parse_exr_pixel_type(pixel_type));
+        options.table_path = table;
+        options.map_path = colormap;
+        const ColorConfig config = load_config(ocio_config);
+        TableColorPyramid baked = [&] {
+            py::gil_scoped_release release;
+            return unwrap(bake_table_color_pyramid(options, config));
+        }();
+        warn_all(baked.warnings);
+        py::dict out;
+        out["output"] = output;
+        out["width"] = baked.result.info.width;
+        out["height"] = baked.result.info.height;
+        out["levels"] = baked.result.info.levels;
+        out["map"] = baked.map_path;
+        out["map_sha256"] = baked.result.info.map_sha256;
+        out["bytes_per_texel"] = baked.result.info.bytes_per_texel();
+        return out;
+        },
+        py::arg("driver"), py::arg("output"), py::kw_only(), py::arg("table"), py::arg("colormap") = "",
+        py::arg("channel") = "", py::arg("wrap") = "clamp", py::arg("nonfinite") = "error",
+        py::arg("pixel_type") = "float", py::arg("ocio_config") = "", py::arg("threads") = 0,
+        "Bakes the colour pyramid of a driver image through the colour map of `table` (C0(f) box-mipped, as "
+        "`cmfilter bake-moments --method color-pyramid`) into `output` (.exr, float or half): a dict of what it "
+        "wrote; apply(output, table, method='color-pyramid') reads it.");
 
     m.def(
         "choose_method",
         [](const std::string& moments, const std::string& table, double tolerance, const std::vector<double>& lods,
            const std::vector<std::string>& candidates, const std::string& colormap, const std::string& driver,
-           const std::string& histograms, const std::string& ocio_config, int threads) {
+           const std::string& histograms, const std::string& color_pyramid, const std::string& ocio_config,
+           int threads) {
         ApplyOptions inputs;
         inputs.moments_path = moments;
         inputs.table_path = table;
@@ -142,6 +178,7 @@ void bind_ops(py::module_& m)
         MethodChoiceOptions options;
         options.tolerance = tolerance;
         options.lods = lods;
+        options.color_pyramid_path = color_pyramid;
         for (const std::string& c : candidates) options.candidates.push_back(unwrap(parse_filter_method(c)));
         const ColorConfig config = load_config(ocio_config);
         const MethodChoice choice = [&] {
@@ -173,9 +210,9 @@ void bind_ops(py::module_& m)
         },
         py::arg("moments"), py::arg("table"), py::kw_only(), py::arg("tolerance"),
         py::arg("lods") = std::vector<double>{}, py::arg("candidates") = std::vector<std::string>{},
-        py::arg("colormap") = "", py::arg("driver") = "", py::arg("histograms") = "", py::arg("ocio_config") = "",
-        py::arg("threads") = 0,
-        "The cheapest method (naive, gaussian, mixture, exact) whose mean CIEDE2000 against the box reference is at "
+        py::arg("colormap") = "", py::arg("driver") = "", py::arg("histograms") = "", py::arg("color_pyramid") = "",
+        py::arg("ocio_config") = "", py::arg("threads") = 0,
+        "The cheapest method (naive, gaussian, color-pyramid with color_pyramid, mixture, exact) whose mean CIEDE2000 against the box reference is at "
         "most tolerance at every LOD in lods (default 1..8), as `cmfilter apply --tolerance`: a dict with the method "
         "(None when nothing meets it), its error, and every candidate's bytes per texel, error per LOD and time.");
 

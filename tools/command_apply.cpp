@@ -35,7 +35,8 @@ FieldFlags apply_flags()
                                {"MomentBakeOptions::order 4", "bake-moments --order 4"},
                                {"ApplyOptions::driver_path", "--driver"},
                                {"MethodChoiceOptions::tolerance", "--tolerance"},
-                               {"MethodChoiceOptions::lods", "--measure-lods"}});
+                               {"MethodChoiceOptions::lods", "--measure-lods"},
+                               {"MethodChoiceOptions::color_pyramid_path", "--color-pyramid P.exr"}});
     return flags;
 }
 
@@ -47,6 +48,7 @@ struct ApplyArgs {
     std::string ocio_config;
     std::optional<double> tolerance;
     std::vector<double> measure_lods;
+    std::string color_pyramid;  // --tolerance's candidate color-pyramid
     bool json = false;
     bool quiet = false;
 };
@@ -81,6 +83,7 @@ Status run(ApplyArgs args)
         MethodChoiceOptions co;
         co.tolerance = *args.tolerance;
         co.lods = args.measure_lods;
+        co.color_pyramid_path = args.color_pyramid;
         if (progress) co.progress = terminal_progress("apply: measuring the methods");
         auto chosen = choose_filter_method(args.options, *config, co);
         if (!chosen) return chosen.error();
@@ -90,6 +93,10 @@ Status run(ApplyArgs args)
         choice = std::move(*chosen);
         for (std::string& why : choice->skipped) why = name_flags(why, apply_flags());
         args.options.method = choice->choice()->method;
+        if (args.options.method == FilterMethod::ColorPyramid) args.options.moments_path = args.color_pyramid;
+    } else if (!args.color_pyramid.empty()) {
+        return bad_input("--color-pyramid is a candidate of --tolerance; with --method color-pyramid, name the colour "
+                         "pyramid with --moments");
     }
     auto image = apply_filter(args.options, *config);
     if (!image) {
@@ -138,8 +145,9 @@ Status run(ApplyArgs args)
         std::cout << std::setprecision(6) << "wrote " << args.output << ": " << to_string(r.method) << ", " << r.width
                   << " x " << r.height << " at lod " << r.lod;
         if (r.lod_clamped) std::cout << " (asked " << r.lod_requested << ")";
-        std::cout << "\n  moments    " << r.moments_path << " (" << r.moments.width << " x " << r.moments.height
-                  << ", levels 0.." << r.top_level << " reachable)\n"
+        std::cout << (r.method == FilterMethod::ColorPyramid ? "\n  pyramid    " : "\n  moments    ") << r.moments_path
+                  << " (" << r.moments.width << " x " << r.moments.height << ", levels 0.." << r.top_level
+                  << " reachable)\n"
                   << "  table      " << r.table_path << "\n";
         if (!r.map_path.empty()) std::cout << "  map        " << r.map_path << "\n";
         if (!r.driver_path.empty()) std::cout << "  driver     " << r.driver_path << "\n";
@@ -164,7 +172,10 @@ Command setup_apply(CLI::App& parent)
     CLI::App* app = parent.add_subcommand("apply",
                                           "Filtered colour image of a colour-mapped driver at a level of detail "
                                           "(naive, gaussian eq. 10, exact sec. 4.1, reference)");
-    app->add_option("--moments", args->options.moments_path, "Moment pyramid of the driver (bake-moments)")->required();
+    app->add_option("--moments", args->options.moments_path,
+                    "Moment pyramid of the driver (bake-moments); with --method color-pyramid, its colour pyramid "
+                    "(bake-moments --method color-pyramid)")
+        ->required();
     app->add_option("--table", args->options.table_path, "Gaussian colour table (bake-colormap)")->required();
     app->add_option("--lod", args->options.lod,
                     "Level of detail: log2 of the footprint width in level-0 texels; fractional "
@@ -174,13 +185,18 @@ Command setup_apply(CLI::App& parent)
         ->required();
     CLI::Option* method =
         app->add_option("--method", args->method,
-                        "naive, gaussian, mixture (moments of bake-moments --order 4), exact or reference")
+                        "naive, gaussian, mixture (moments of bake-moments --order 4), exact, color-pyramid (--moments "
+                        "names a colour pyramid of the table's map) or reference")
             ->capture_default_str();
     app->add_option("--tolerance", args->tolerance,
                     "Choose the cheapest method whose mean CIEDE2000 against the box reference is at most DE at "
-                    "every measured LOD (naive, gaussian, mixture with order-4 moments, exact with --histograms)")
+                    "every measured LOD (naive, gaussian, color-pyramid with --color-pyramid, mixture with order-4 "
+                    "moments, exact with --histograms)")
         ->excludes(method);
     add_measure_lods_option(*app, args->measure_lods);
+    app->add_option("--color-pyramid", args->color_pyramid,
+                    "Colour pyramid of the same driver through the table's map (bake-moments --method "
+                    "color-pyramid): --tolerance measures color-pyramid too, and reads it when chosen");
     app->add_option("--size", args->size, "Output size WxH (default: the size of level floor(lod))");
     app->add_option("--map", args->options.map_path,
                     "Colour map image (default: the table's cmfilter:source, hash-checked)");

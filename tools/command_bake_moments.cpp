@@ -9,6 +9,7 @@
 #include "cmfilter/util/stopwatch.h"
 
 #include "cmfilter/util/atomic_output.h"
+#include "cmfilter/ops/table_color_pyramid.h"
 #include "cmfilter/texture/histogram_pyramid.h"
 #include "cmfilter/texture/moment_pyramid.h"
 #include "cmfilter/util/temporary_file.h"
@@ -37,6 +38,7 @@ struct BakeMomentsArgs {
     std::string nan = "error";
     int threads = 0;
     int order = 2;
+    std::string method;  // what the baked file is for: naive, gaussian, mixture or color-pyramid
     std::optional<double> tolerance;
     std::string table;
     std::string map;
@@ -48,8 +50,21 @@ struct BakeMomentsArgs {
     bool update = false;
 };
 
-// The cheapest method for --tolerance, measured on order-4 moments baked to a
-// temporary file (and the histograms just written, when asked for).
+// The colour pyramid of the driver through the table's map, as --method
+// color-pyramid writes it (with the moments' driver, wrap and storage).
+TableColorPyramidOptions color_pyramid_options(const BakeMomentsArgs& args, const MomentBakeOptions& options)
+{
+    TableColorPyramidOptions o;
+    static_cast<PyramidBakeOptions&>(o.bake) = options;
+    o.bake.progress = options.progress;
+    o.table_path = args.table;
+    o.map_path = args.map;
+    return o;
+}
+
+// The cheapest method for --tolerance, measured on order-4 moments and a
+// colour pyramid baked to temporary files (and the histograms just written,
+// when asked for).
 Expected<MethodChoice> choose_moment_order(const BakeMomentsArgs& args, const MomentBakeOptions& options,
                                            bool histograms, bool progress)
 {
@@ -63,6 +78,11 @@ Expected<MethodChoice> choose_moment_order(const BakeMomentsArgs& args, const Mo
     four.progress = nullptr;
     four.storage.attributes.clear();
     if (auto baked = bake_moment_pyramid(four); !baked) return baked.error();
+    auto colors = TemporaryFile::create("cmfilter-color-pyramid", ".exr");
+    if (!colors) return colors.error();
+    TableColorPyramidOptions cp = color_pyramid_options(args, four);
+    cp.bake.output_path = colors->path();
+    if (auto baked = bake_table_color_pyramid(cp, *config); !baked) return baked.error();
     ApplyOptions measured;
     measured.moments_path = aside->path();
     measured.table_path = args.table;
@@ -73,6 +93,7 @@ Expected<MethodChoice> choose_moment_order(const BakeMomentsArgs& args, const Mo
     MethodChoiceOptions co;
     co.tolerance = *args.tolerance;
     co.lods = args.measure_lods;
+    co.color_pyramid_path = colors->path();
     if (progress) co.progress = terminal_progress("bake-moments: measuring the methods");
     auto choice = choose_filter_method(measured, *config, co);
     if (!choice) return choice.error();
@@ -80,6 +101,61 @@ Expected<MethodChoice> choose_moment_order(const BakeMomentsArgs& args, const Mo
     for (std::string& why : choice->skipped)
         why = name_flags(why, {{"ApplyOptions::histograms_path", "--histograms H.exr"}});
     return choice;
+}
+
+// What --method color-pyramid (or a tolerance that chose it) wrote.
+void report_color_pyramid(const BakeMomentsArgs& args, const ExrOutputOptions& storage, const std::string& digest,
+                          const TableColorPyramid& baked, const std::optional<HistogramPyramidInfo>& histograms,
+                          const std::optional<MethodChoice>& choice, double total_ms)
+{
+    const ColorPyramidInfo& info = baked.result.info;
+    if (args.json) {
+        nlohmann::json j;
+        j["output"] = args.output;
+        j["storage"] = storage_json(storage);
+        j["up_to_date"] = false;
+        j["build"] = digest;
+        j["kind"] = kColorPyramidKind;
+        j["size"] = {info.width, info.height};
+        j["levels"] = info.levels;
+        j["channel"] = info.channel;
+        j["driver_range"] = {info.driver_min, info.driver_max};
+        j["wrap"] = to_string(info.wrap);
+        j["nonfinite_replaced"] = info.nonfinite_replaced;
+        j["source"] = info.source;
+        j["source_sha256"] = info.source_sha256;
+        j["map"] = baked.map_path;
+        j["map_sha256"] = info.map_sha256;
+        j["linear_space"] = info.linear_space;
+        j["bytes_per_texel"] = info.bytes_per_texel();
+        if (histograms) j["histograms"] = {{"output", args.histograms}, {"values", histograms->values}};
+        if (choice) j["choice"] = method_choice_json(*choice);
+        j["time_ms"] = {{"read", baked.result.read_ms},
+                        {"build", baked.result.build_ms},
+                        {"write", baked.result.write_ms},
+                        {"total", total_ms}};
+        print_json("bake-moments", std::move(j));
+        return;
+    }
+    if (args.quiet) return;
+    std::cout << std::setprecision(9) << "wrote " << args.output << ": colour pyramid, " << info.width << " x "
+              << info.height << ", " << info.levels << " levels\n"
+              << "  driver     " << info.source << " (channel " << info.channel << "), range [" << info.driver_min
+              << ", " << info.driver_max << "]\n"
+              << "  map        " << baked.map_path << " (digest " << info.map_sha256.substr(0, 12)
+              << "; apply refuses another)\n"
+              << "  channels   R, G, B = box mean of C0(f) per texel, " << info.linear_space << "\n"
+              << "  wrap       " << to_string(info.wrap) << "\n"
+              << "  storage    " << exr_output_text(storage, "64 x 64 tiles") << ", " << info.bytes_per_texel()
+              << " bytes per texel\n";
+    if (histograms)
+        std::cout << "  histograms " << args.histograms << ": " << histograms->values.size()
+                  << " distinct values (exact method)\n";
+    if (choice) print_method_choice(std::cout, *choice);
+    if (info.nonfinite_replaced > 0)
+        std::cout << "  non-finite " << info.nonfinite_replaced << " texels replaced by 0\n";
+    std::cout << std::setprecision(3) << "  time       read " << baked.result.read_ms << " ms, build "
+              << baked.result.build_ms << " ms, write " << baked.result.write_ms << " ms\n";
 }
 
 Status run(const BakeMomentsArgs& args, const CLI::App& app)
@@ -120,6 +196,20 @@ Status run(const BakeMomentsArgs& args, const CLI::App& app)
         return bad_input("MethodChoiceOptions::tolerance needs the colour table to measure against "
                          "(ApplyOptions::table_path)",
                          "ApplyOptions::table_path");
+    bool color_pyramid = false;
+    if (!args.method.empty()) {
+        auto method = parse_filter_method(args.method);
+        if (!method) return method.error();
+        if (*method == FilterMethod::Exact || *method == FilterMethod::Reference)
+            return bad_input("--method " + args.method +
+                             " reads no baked pyramid of its own (expected naive, gaussian, mixture or color-pyramid; "
+                             "exact reads --histograms H.exr)");
+        options.order = *method == FilterMethod::Mixture ? 4 : 2;
+        color_pyramid = *method == FilterMethod::ColorPyramid;
+        if (color_pyramid && args.table.empty())
+            return bad_input("--method color-pyramid bakes C0(f) through a colour map: give its table with --table "
+                             "T.exr (bake-colormap)");
+    }
     const Stopwatch t0;
     // The histogram pyramid first: it is the one refused for a driver with
     // too many distinct values, and then neither file is written.
@@ -147,6 +237,22 @@ Status run(const BakeMomentsArgs& args, const CLI::App& app)
         options.order = c.method == FilterMethod::Mixture ? 4 : 2;
         options.method_choice = MethodToleranceRecord{to_string(c.method), choice->tolerance, c.worst,
                                                       lod_list_text(choice->lods), args.table};
+    }
+    if (choice && choice->choice()->method == FilterMethod::ColorPyramid) color_pyramid = true;
+    if (color_pyramid) {
+        auto config = load_color_config(args.ocio_config);
+        if (!config) return config.error();
+        TableColorPyramidOptions cp = color_pyramid_options(args, options);
+        if (choice) cp.bake.method_choice = options.method_choice;
+        auto baked = bake_table_color_pyramid(cp, *config);
+        if (!baked) {
+            if (progress) std::cerr << "\n";
+            if (histograms) std::remove(args.histograms.c_str());  // all or nothing
+            return baked.error();
+        }
+        for (const std::string& w : baked->warnings) std::cerr << "cmfilter bake-moments: warning: " << w << "\n";
+        report_color_pyramid(args, *storage, *digest, *baked, histograms, choice, t0.elapsed_ms());
+        return ok();
     }
     auto baked = bake_moment_pyramid(options);
     if (!baked) {
@@ -227,11 +333,17 @@ Command setup_bake_moments(CLI::App& parent)
         app->add_option("--order", args->order,
                         "Moments per texel: 2 (f, f^2: gaussian) or 4 (also f^3, f^4: apply --method mixture)")
             ->capture_default_str();
+    CLI::Option* method =
+        app->add_option("--method", args->method,
+                        "Bake what this apply method reads: naive or gaussian (2 moments), mixture (4), or "
+                        "color-pyramid (C0(f) box-mipped through --table's map: exact, 3 channels, that map only)")
+            ->excludes(order);
     app->add_option("--tolerance", args->tolerance,
-                    "Bake the fewest moments whose cheapest method meets this mean CIEDE2000 against the box "
-                    "reference through --table at every measured LOD (naive, gaussian: 2; mixture: 4; exact "
-                    "with --histograms)")
-        ->excludes(order);
+                    "Bake what the cheapest method meeting this mean CIEDE2000 against the box reference through "
+                    "--table at every measured LOD reads (naive, gaussian: 2 moments; color-pyramid; mixture: 4; "
+                    "exact with --histograms)")
+        ->excludes(order)
+        ->excludes(method);
     app->add_option("--table", args->table, "Gaussian colour table --tolerance measures through (bake-colormap)");
     app->add_option("--map", args->map, "Colour map image for --tolerance (default: the table's cmfilter:source)");
     add_measure_lods_option(*app, args->measure_lods);

@@ -183,7 +183,7 @@ void print_method_choice(std::ostream& out, const MethodChoice& choice)
         << lod_list_text(choice.lods) << ":\n";
     for (std::size_t i = 0; i < choice.trials.size(); ++i) {
         const MethodTrial& t = choice.trials[i];
-        out << "    " << std::left << std::setw(9) << to_string(t.method) << std::right << std::setw(4)
+        out << "    " << std::left << std::setw(13) << to_string(t.method) << std::right << std::setw(4)
             << t.bytes_per_texel << " B/texel, worst " << std::setw(7) << t.worst << " (LOD " << t.worst_lod << "), "
             << std::setw(7) << t.time_ms << " ms"
             << (choice.chosen == i ? "  <- chosen"

@@ -2,14 +2,16 @@
 // render --method auto: each texture surface's method chosen for the
 // tolerance as `apply --tolerance` chooses it (ops/method_choice.h), on its
 // own driver and table: four moments of its driver (with the texture's
-// wrap and channel), its table (the fitted one, when fitted) and, for a
-// driver of at most kHistogramMaxValues values, its histogram pyramid are
-// written to temporary files and measured against the box reference.
+// wrap and channel), its colour pyramid through its map, its table (the
+// fitted one, when fitted) and, for a driver of at most kHistogramMaxValues
+// values, its histogram pyramid are written to temporary files and measured
+// against the box reference.
 #include "command.h"
 
 #include "cmfilter/ops/sub_footprint_choice.h"
 #include "cmfilter/tables/gaussian_albedo.h"
 #include "cmfilter/tables/gaussian_color_table_file.h"
+#include "cmfilter/texture/color_pyramid_file.h"
 #include "cmfilter/texture/histogram_pyramid.h"
 #include "cmfilter/texture/moment_pyramid.h"
 #include "cmfilter/util/memory_budget.h"
@@ -68,6 +70,19 @@ choose_texture_methods(const Scene& scene, const std::vector<Material>& material
         bake.threads = threads;
         if (auto baked = bake_moment_pyramid(bake); !baked) return prefixed(surface + ": ", baked.error());
 
+        // The colour pyramid through the material's own map (a scene's maps
+        // are fixed), as render --method color-pyramid colours it.
+        auto colors = TemporaryFile::create("cmfilter-auto-color-pyramid", ".exr");
+        if (!colors) return colors.error();
+        ColorPyramidBakeOptions cp;
+        static_cast<PyramidBakeOptions&>(cp) = bake;
+        cp.output_path = colors->path();
+        cp.map = &m.color.map;
+        cp.map_source = m.provenance.map_path;
+        cp.linear_space = config.scene_linear_name();
+        cp.linear_interop_id = config.interop_id(cp.linear_space);
+        if (auto baked = bake_color_pyramid(cp); !baked) return prefixed(surface + ": ", baked.error());
+
         auto table = TemporaryFile::create("cmfilter-auto-table", ".exr");
         if (!table) return table.error();
         GaussianColorTableInfo table_info;
@@ -104,9 +119,10 @@ choose_texture_methods(const Scene& scene, const std::vector<Material>& material
         inputs.threads = threads;
         MethodChoiceOptions o = options;
         if (!seen_lods.empty()) o.lods = seen_lods;
+        o.color_pyramid_path = colors->path();
         // A `moments` file of two moments renders as it is: no mixture.
         if (!m.provenance.moments_baked && info.order != 4 && o.candidates.empty()) {
-            o.candidates = {FilterMethod::Naive, FilterMethod::Gaussian};
+            o.candidates = {FilterMethod::Naive, FilterMethod::Gaussian, FilterMethod::ColorPyramid};
             if (histograms) o.candidates.push_back(FilterMethod::Exact);
         }
         auto choice = choose_filter_method(inputs, config, o);
@@ -169,6 +185,7 @@ RenderMethod render_method_of(FilterMethod method)
     case FilterMethod::Naive: return RenderMethod::Naive;
     case FilterMethod::Mixture: return RenderMethod::Mixture;
     case FilterMethod::Exact: return RenderMethod::Exact;
+    case FilterMethod::ColorPyramid: return RenderMethod::ColorPyramid;
     default: return RenderMethod::Gaussian;
     }
 }

@@ -28,17 +28,20 @@ GLenum color_map_wrap(cmfilter::WrapMode wrap)
     return wrap == WrapMode::Repeat ? GL_REPEAT : wrap == WrapMode::Mirror ? GL_MIRRORED_REPEAT : GL_CLAMP_TO_EDGE;
 }
 
-MomentLevels read_moment_levels(const std::string& path)
+MomentLevels read_moment_levels(const std::string& path) { return read_pyramid_levels(path, 2); }
+
+MomentLevels read_pyramid_levels(const std::string& path, int channels)
 {
     auto in = cmfilter::open_image_input(path);
     if (!in) throw std::runtime_error(in.error().message);
     MomentLevels out;
     for (int k = 0; (*in)->seek_subimage(0, k); ++k) {
         const OIIO::ImageSpec& spec = (*in)->spec();
-        if (spec.nchannels != 2)
-            throw std::runtime_error(path + ": level " + std::to_string(k) + " has not 2 channels");
-        out.texels.emplace_back(static_cast<std::size_t>(spec.width) * spec.height * 2);
-        if (!cmfilter::read_float_pixels(**in, 0, k, 0, 2, out.texels.back().data()))
+        if (spec.nchannels != channels)
+            throw std::runtime_error(path + ": level " + std::to_string(k) + " has not " + std::to_string(channels) +
+                                     " channels");
+        out.texels.emplace_back(static_cast<std::size_t>(spec.width) * spec.height * channels);
+        if (!cmfilter::read_float_pixels(**in, 0, k, 0, channels, out.texels.back().data()))
             throw std::runtime_error(path + ": cannot read MIP level " + std::to_string(k));
         out.levels.push_back({spec.width, spec.height, nullptr});
     }

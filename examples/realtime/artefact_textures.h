@@ -34,5 +34,7 @@ struct MomentLevels {
 // Every MIP level of subimage 0 of the moment pyramid at `path` (two
 // channels); throws std::runtime_error naming the file and the level.
 MomentLevels read_moment_levels(const std::string& path);
+// The same for any pyramid of `channels` channels (a colour pyramid: 3).
+MomentLevels read_pyramid_levels(const std::string& path, int channels);
 
 }  // namespace cmfilter_gl

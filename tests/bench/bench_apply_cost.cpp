@@ -15,10 +15,15 @@
 // (OpenImageIO's TextureSystem, file cached in memory after a warm-up run):
 //   naive     MomentTexture::lookup, then C0(mean)
 //   gaussian  MomentTexture::lookup, then T(mean, sigma)
+// and a third the baked colour pyramid of the same driver through each map
+// (bake-moments --method color-pyramid) against that gaussian path:
+//   color-pyramid  ColorPyramidTexture::lookup: the colour itself
 //
 //   cmfilter-bench-apply-cost LUTS_DIR
 #include "cmfilter/colormap/color_map_loading.h"
 #include "cmfilter/tables/gaussian_color_table.h"
+#include "cmfilter/texture/color_pyramid_file.h"
+#include "cmfilter/texture/color_pyramid_texture.h"
 #include "cmfilter/texture/moment_pyramid.h"
 #include "cmfilter/texture/moment_texture.h"
 
@@ -62,6 +67,63 @@ void fetch(const std::vector<float>& level, float s, float t, float* out)
         const float b = q[c] + fx * (q[C + c] - q[c]);
         out[c] = a + fy * (b - a);
     }
+}
+
+// The baked colour pyramid of the driver at driver_path through each map,
+// against gaussian through the moments, both through TextureSystem.
+int through_color_pyramid(const std::string& luts, const ColorConfig& config, const MomentTexture& moments,
+                          const std::string& driver_path, const std::string& dir)
+{
+    constexpr int kLookups = 1 << 20;
+    std::cout << "\nColour pyramid against gaussian, both through TextureSystem (bilinear, LOD 0), " << kLookups
+              << " lookups per run in scanline order; fastest of " << kRuns << " alternating runs each.\n\n"
+              << "| map | gaussian ns/pixel | color-pyramid ns/pixel | color-pyramid / gaussian |\n"
+                 "|---|---:|---:|---:|\n";
+    for (const char* name : kMaps) {
+        ColorMapLoadOptions opt;
+        opt.path = luts + "/" + name + ".png";
+        auto map = load_color_map(opt, config);
+        if (!map) return 1;
+        auto table = GaussianColorTable::bake(map->map, {});
+        if (!table) return 1;
+        ColorPyramidBakeOptions bake;
+        bake.driver_path = driver_path;
+        bake.output_path = dir + "/" + name + "-colors.exr";
+        bake.map = &map->map;
+        if (auto baked = bake_color_pyramid(bake); !baked) {
+            std::cerr << baked.error().message << "\n";
+            return 1;
+        }
+        auto colors = ColorPyramidTexture::open(bake.output_path);
+        if (!colors) return 1;
+        const auto coordinate = [](int i, int axis) {
+            const int texel = i % (kSize * kSize);
+            return (static_cast<float>(axis == 0 ? texel % kSize : texel / kSize) + 0.5f) / kSize;
+        };
+        double sink = 0;
+        LookupCounters counters;
+        const auto [gaussian, pyramid] = fastest_pair_ms(
+            kRuns,
+            [&] {
+            double acc = 0;
+            for (int i = 0; i < kLookups; ++i) {
+                const MomentSample m = moments.lookup(coordinate(i, 0), coordinate(i, 1), 0.0f);
+                acc += table->lookup(m.mean, m.sigma, &counters).g;
+            }
+            sink += acc;
+            },
+            [&] {
+            double acc = 0;
+            for (int i = 0; i < kLookups; ++i) acc += colors->lookup(coordinate(i, 0), coordinate(i, 1), 0.0f).color.g;
+            sink += acc;
+        });
+        char row[200];
+        std::snprintf(row, sizeof row, "| %s | %.1f | %.1f | %.2f |\n", name, gaussian * 1e6 / kLookups,
+                      pyramid * 1e6 / kLookups, pyramid / gaussian);
+        std::cout << row;
+        if (sink == 42.0) std::cout << "";
+    }
+    return 0;
 }
 
 // The same level as a 1024 x 1024 float driver, baked to a moment pyramid in
@@ -129,6 +191,7 @@ int through_moment_texture(const std::string& luts, const ColorConfig& config, c
         std::cout << row;
         if (sink == 42.0) std::cout << "";
     }
+    if (int st = through_color_pyramid(luts, config, *texture, driver_path, dir.string()); st != 0) return st;
     fs::remove_all(dir);
     return 0;
 }

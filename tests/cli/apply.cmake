@@ -49,7 +49,7 @@ foreach(size 0x4 12 4x-3 axb)
                       ABSENT ${A} COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod 0 --size ${size} -o ${A})
 endforeach()
 cmfilter_apply_case(NAME bad.unknown-method EXIT 3
-                    STDERR "unknown method 'box' \\(expected naive, gaussian, mixture, exact or reference\\)"
+                    STDERR "unknown method 'box' \\(expected naive, gaussian, mixture, exact, color-pyramid or reference\\)"
                     ABSENT ${A} COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod 0 --method box -o ${A})
 cmfilter_apply_case(NAME bad.exact-without-histograms EXIT 3
                     STDERR "--method exact needs --histograms H\\.exr"
@@ -58,7 +58,7 @@ cmfilter_apply_case(NAME bad.mixture-two-moments EXIT 3
                     STDERR "--method mixture needs a moment pyramid of order 4; '.*apply-moments\\.exr' holds 2 moments \\(re-bake it with bake-moments --order 4\\)"
                     ABSENT ${A} COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod 1 --method mixture -o ${A})
 cmfilter_apply_case(NAME bad.tolerance-none-meets EXIT 3
-                    STDERR "'.*apply-moments\\.exr' through '.*apply-table\\.exr': no method meets --tolerance 1e-09 \\(mean CIEDE2000 at LOD 1, 2, 3, 4, 5\\); the closest is [a-z]+ at [0-9.e-]+ \\(LOD [1-5]\\); not tried: mixture: '.*apply-moments\\.exr' holds 2 moments \\(mixture needs bake-moments --order 4\\); not tried: exact: no histogram pyramid \\(--histograms H\\.exr\\)"
+                    STDERR "'.*apply-moments\\.exr' through '.*apply-table\\.exr': no method meets --tolerance 1e-09 \\(mean CIEDE2000 at LOD 1, 2, 3, 4, 5\\); the closest is [a-z]+ at [0-9.e-]+ \\(LOD [1-5]\\); not tried: color-pyramid: no colour pyramid of the driver through this map \\(--color-pyramid P\\.exr\\); not tried: mixture: '.*apply-moments\\.exr' holds 2 moments \\(mixture needs bake-moments --order 4\\); not tried: exact: no histogram pyramid \\(--histograms H\\.exr\\)"
                     ABSENT ${A} COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod 1 --tolerance 1e-9 -o ${A})
 cmfilter_apply_case(NAME bad.tolerance-zero EXIT 3
                     STDERR "--tolerance 0 is invalid \\(expected a CIEDE2000 difference > 0\\)"
@@ -81,11 +81,12 @@ cmfilter_apply_case(NAME moments.tolerance-without-table EXIT 3
                     STDERR "--tolerance needs the colour table to measure against \\(--table\\)"
                     ABSENT ${OUT}/tolerance-moments.exr COMMAND ${CMF} bake-moments ${FIX}/apply-driver.exr -o ${OUT}/tolerance-moments.exr
                                         --tolerance 1)
+# In half, even the colour pyramid is off by its rounding: nothing meets 1e-9.
 cmfilter_apply_case(NAME moments.tolerance-none-meets EXIT 3
-                    STDERR "'.*apply-driver\\.exr' through '.*apply-table\\.exr': no method meets --tolerance 1e-09 .*the closest is"
+                    STDERR "'.*apply-driver\\.exr' through '.*apply-table\\.exr': no method meets --tolerance 1e-09 .*the closest is color-pyramid"
                     ABSENT ${OUT}/tolerance-moments.exr
                     COMMAND ${CMF} bake-moments ${FIX}/apply-driver.exr -o ${OUT}/tolerance-moments.exr
-                            --tolerance 1e-9 --table ${AT})
+                            --tolerance 1e-9 --table ${AT} -d half)
 # The order follows the choice: two moments for naive, recorded with it.
 cmfilter_apply_case(NAME moments.tolerance-records-choice EXIT 0
                     STDOUT "cmfilter:method: \"naive\".*cmfilter:method_table: \"apply-table\\.exr\".*cmfilter:moment_order: 2"
@@ -134,6 +135,59 @@ cmfilter_apply_case(NAME info EXIT 0 STDOUT "filtered-image"
 # apply-partial.exr comes from warn.partial-overlap: a fixture, so the test
 # runs it first even when only this one is selected.
 set_tests_properties(cli.apply.info PROPERTIES FIXTURES_REQUIRED "cli_dirs;cli_fixtures;apply_inputs;apply_partial")
+
+# --- the baked colour pyramid (--method color-pyramid) ---------------------------
+set(CP ${OUT}/apply-color-pyramid.exr)
+cmfilter_apply_case(NAME color-pyramid.bake EXIT 0
+                    STDOUT "wrote .*apply-color-pyramid\\.exr: colour pyramid, 32 x 32, 6 levels.*map +.*apply-map\\.exr \\(digest [0-9a-f]{12}; apply refuses another\\).*12 bytes per texel"
+                    COMMAND bash -c "$0 bake-moments $1 --method color-pyramid --table $2 -o $3 | tr '\\n' ' '"
+                            ${CMF} ${FIX}/apply-driver.exr ${AT} ${CP})
+set_tests_properties(cli.apply.color-pyramid.bake PROPERTIES FIXTURES_SETUP apply_color_pyramid)
+# Applied, it is the reference (the box mean of C0(f) from the driver) within
+# float rounding, at an integer and a fractional LOD.
+cmfilter_apply_case(NAME color-pyramid.equals-reference EXIT 0
+                    COMMAND bash -c "set -e; for lod in 0 2 3.5; do $0 apply --moments $1 --table $2 --lod $lod --method color-pyramid -o $4/cp-$lod.exr -q; $0 apply --moments $3 --table $2 --lod $lod --method reference -o $4/ref-$lod.exr -q; oiiotool --fail 2e-6 --hardfail 2e-6 $4/cp-$lod.exr $4/ref-$lod.exr --diff > /dev/null; done"
+                            ${CMF} ${CP} ${AT} ${AM} ${OUT})
+set_tests_properties(cli.apply.color-pyramid.equals-reference PROPERTIES
+                     FIXTURES_REQUIRED "cli_dirs;cli_fixtures;apply_inputs;apply_color_pyramid")
+cmfilter_apply_case(NAME color-pyramid.info EXIT 0
+                    STDOUT "colour pyramid of a driver through one colour map.*map_sha256 +[0-9a-f]{64}"
+                    COMMAND bash -c "$0 info $1 | tr '\\n' ' '" ${CMF} ${CP})
+set_tests_properties(cli.apply.color-pyramid.info PROPERTIES
+                     FIXTURES_REQUIRED "cli_dirs;cli_fixtures;apply_inputs;apply_color_pyramid")
+# Another map (the ramp, through --map): refused, no image.
+cmfilter_apply_case(NAME bad.color-pyramid-other-map EXIT 3
+                    STDERR "colour pyramid '.*apply-color-pyramid\\.exr' was baked through another colour map \\('.*apply-map\\.exr'\\) than the map of table '.*apply-table\\.exr' \\('.*ramp\\.png'\\): its colours or wrap differ"
+                    ABSENT ${A} COMMAND ${CMF} apply --moments ${CP} --table ${AT} --map ${FIX}/ramp.png --lod 1
+                                        --method color-pyramid -o ${A})
+set_tests_properties(cli.apply.bad.color-pyramid-other-map PROPERTIES
+                     FIXTURES_REQUIRED "cli_dirs;cli_fixtures;apply_inputs;apply_color_pyramid")
+cmfilter_apply_case(NAME bad.color-pyramid-of-moments EXIT 3
+                    STDERR "--method color-pyramid reads a colour pyramid, and '.*apply-moments\\.exr' is a moment pyramid \\(bake one with bake-moments DRIVER --method color-pyramid --table T\\.exr\\)"
+                    ABSENT ${A} COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod 1 --method color-pyramid -o ${A})
+cmfilter_apply_case(NAME bad.color-pyramid-without-table EXIT 3
+                    STDERR "--method color-pyramid bakes C0\\(f\\) through a colour map: give its table with --table"
+                    ABSENT ${OUT}/cp-none.exr
+                    COMMAND ${CMF} bake-moments ${FIX}/apply-driver.exr --method color-pyramid -o ${OUT}/cp-none.exr)
+cmfilter_apply_case(NAME bad.bake-method-exact EXIT 3
+                    STDERR "--method exact reads no baked pyramid of its own"
+                    ABSENT ${OUT}/cp-none.exr
+                    COMMAND ${CMF} bake-moments ${FIX}/apply-driver.exr --method exact -o ${OUT}/cp-none.exr)
+# --tolerance with --color-pyramid: on this driver through the hard-edged map
+# nothing cheaper meets 0.05 at LOD 1-3 (gaussian and naive are 1 and more
+# off), the colour pyramid does, and apply reads it.
+cmfilter_apply_case(NAME color-pyramid.tolerance EXIT 0
+                    STDOUT "color-pyramid +12 B/texel, worst +0 \\(LOD 1\\).*<- chosen.*cmfilter:method: \"color-pyramid\""
+                    COMMAND bash -c "set -o pipefail && ($0 apply --moments $1 --table $2 --color-pyramid $3 --lod 1 --tolerance 0.05 --measure-lods 1,2,3 -o $4 && oiiotool --info -v $4) | tr '\\n' ' '"
+                            ${CMF} ${AM} ${AT} ${CP} ${OUT}/apply-cp-tolerance.exr)
+set_tests_properties(cli.apply.color-pyramid.tolerance PROPERTIES
+                     FIXTURES_REQUIRED "cli_dirs;cli_fixtures;apply_inputs;apply_color_pyramid")
+# bake-moments --tolerance measures the colour pyramid too and writes it
+# when it is the cheapest that meets.
+cmfilter_apply_case(NAME moments.tolerance-color-pyramid EXIT 0
+                    STDOUT "cmfilter:kind: \"color-pyramid\".*cmfilter:method: \"color-pyramid\""
+                    COMMAND bash -c "set -o pipefail && ($0 bake-moments $1 -o $2 --tolerance 0.05 --table $3 --measure-lods 1,2,3 -q && oiiotool --info -v $2) | tr '\\n' ' '"
+                            ${CMF} ${FIX}/apply-driver.exr ${OUT}/tolerance-chosen-cp.exr ${AT})
 
 # The done-when check: reference against oiiotool --colormap + maketx --filter box.
 find_program(MAKETX_CLI maketx)

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
 # Checks `cmfilter apply --method reference` (the box mean of C0(f) over each
-# footprint) against OpenImageIO's own tools: `oiiotool --colormap` maps the
+# footprint) and the baked colour pyramid (`bake-moments --method
+# color-pyramid`, every MIP level of its file, and `apply --method
+# color-pyramid`) against OpenImageIO's own tools: `oiiotool --colormap` maps the
 # driver through the same piecewise-linear map, `maketx --filter box` box-mips
 # the result, and each level is compared with apply at that integer LOD; a
 # fractional LOD is compared with the two levels blended (oiiotool
@@ -31,6 +33,14 @@ diff_images() {
   "$oiiotool" --warn 1e-4 --fail 1e-4 --hardfail 1e-4 "$1" "$2" --diff
 }
 fail=0
+"$cmf" bake-moments "$fix/apply-driver.exr" --method color-pyramid --table "$out/table.exr" -o "$out/colors.exr" -q
+for k in 0 1 2 3 4 5; do
+  "$oiiotool" "$out/colors.exr" --selectmip $k -o "$out/colors-$k.exr"
+  diff_images "$out/colors-$k.exr" "$out/maketx-$k.exr" || { echo "FAIL: colour pyramid level $k"; fail=1; }
+  "$cmf" apply --moments "$out/colors.exr" --table "$out/table.exr" --lod $k \
+      --method color-pyramid -o "$out/color-pyramid-$k.exr" -q 2> /dev/null
+  diff_images "$out/color-pyramid-$k.exr" "$out/maketx-$k.exr" || { echo "FAIL: apply color-pyramid at lod $k"; fail=1; }
+done
 for k in 0 1 2 3 4 5; do
   "$cmf" apply --moments "$out/moments.exr" --table "$out/table.exr" --lod $k \
       --method reference -o "$out/reference-$k.exr" -q 2> /dev/null

@@ -28,6 +28,10 @@ cmfilter_json_case(bake-colormap-tolerance "" ${CMF} bake-colormap ${LUTS}/step.
 cmfilter_json_case(bake-moments apply_inputs ${CMF} bake-moments ${FIX}/driver-4values.png -o ${JOUT}/moments.exr
                    --histograms ${JOUT}/histograms.exr --tile 32 32 --tolerance 100 --table ${OUT}/apply-table.exr
                    --measure-lods 1)
+cmfilter_json_case(bake-moments-color-pyramid apply_inputs ${CMF} bake-moments ${FIX}/driver-4values.png
+                   -o ${JOUT}/color-pyramid.exr --method color-pyramid --table ${OUT}/apply-table.exr -d half)
+cmfilter_json_case(bake-moments-tolerance-color-pyramid apply_inputs ${CMF} bake-moments ${FIX}/apply-driver.exr
+                   -o ${JOUT}/tolerance-cp.exr --tolerance 0.05 --table ${OUT}/apply-table.exr --measure-lods 1,2)
 cmfilter_json_case(bake-noise "" ${CMF} bake-noise --noise gradient:seed=3 --lod-step 1 --max-footprints 4096
                    -o ${JOUT}/sigma.exr --csv ${JOUT}/sigma.csv)
 cmfilter_json_case(noise-image "" ${CMF} noise-image --noise fbm --size 32x16 -o ${JOUT}/noise.exr)

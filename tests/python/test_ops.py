@@ -61,6 +61,28 @@ def test_apply_mixture_of_a_two_valued_driver_is_its_box_mean(tmp_path, luts):
         cmfilter.apply(str(tmp_path / "m2.exr"), str(tmp_path / "step.exr"), lod=2, method="mixture")
 
 
+def test_color_pyramid_is_numpys_box_mean_of_c0_and_refuses_another_map(baked, luts, tmp_path):
+    f, moments, table = baked
+    texels = linear_colormap(luts / "terrain.png")
+    pyramid = str(tmp_path / "colors.exr")
+    baked_info = cmfilter.bake_color_pyramid(str(tmp_path / "driver.png"), pyramid, table=table)
+    assert baked_info["levels"] == 5 and baked_info["bytes_per_texel"] == 12
+    for lod, n in ((0, 16), (1, 8), (2, 4)):
+        got = cmfilter.apply(pyramid, table, lod=lod, method="color-pyramid")
+        b = 16 // n
+        want = c0(texels, 0, 1, f).reshape(n, b, n, b, 3).mean(axis=(1, 3))
+        np.testing.assert_allclose(got, want, atol=5e-4)
+    # Another map's table: refused, naming the pyramid.
+    other = cmfilter.ColorTable.bake(cmfilter.ColorMap.load(str(luts / "stripes.png")), values=64, sigmas=16)
+    other.write(str(tmp_path / "other.exr"))
+    with pytest.raises(cmfilter.Error, match="was baked through another colour map"):
+        cmfilter.apply(pyramid, str(tmp_path / "other.exr"), lod=1, method="color-pyramid")
+    # The choice measures it: exact, so it meets a tolerance gaussian does not.
+    choice = cmfilter.choose_method(moments, table, tolerance=1e-3, lods=[1, 2], color_pyramid=pyramid)
+    assert choice["method"] == "color-pyramid"
+    assert [t["method"] for t in choice["trials"]][:3] == ["naive", "gaussian", "color-pyramid"]
+
+
 def test_apply_clamped_lod_warns(baked):
     _, moments, table = baked
     with pytest.warns(UserWarning, match="lod"):

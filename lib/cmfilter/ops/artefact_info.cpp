@@ -5,6 +5,7 @@
 
 #include "cmfilter/ops/filtered_image_file.h"
 #include "cmfilter/tables/gaussian_color_table_file.h"
+#include "cmfilter/texture/color_pyramid_file.h"
 #include "cmfilter/texture/histogram_pyramid.h"
 #include "cmfilter/io/image_reading.h"
 #include "cmfilter/texture/moment_pyramid_info.h"
@@ -40,6 +41,12 @@ std::string describe_kind(const std::string& kind, int width, int height)
                std::to_string(width) + " x " + std::to_string(height) +
                " level 0, tiled MIP-map; channel b = fraction of the footprint where f = v_b "
                "(cmfilter:values)";
+    if (kind == kColorPyramidKind)
+        return "colour pyramid of a driver through one colour map (apply --method color-pyramid): " +
+               std::to_string(width) + " x " + std::to_string(height) +
+               " level 0, tiled MIP-map; channels R, G, B = box mean of C0(f) over each texel's footprint, "
+               "scene-linear (cmfilter:linear_space), exact for a box filter; for the map whose digest is "
+               "cmfilter:map_sha256 only";
     if (kind == kFilteredImageKind)
         return "filtered colour image of a colour-mapped driver (cmfilter apply): " + std::to_string(width) + " x " +
                std::to_string(height) + " RGB";

@@ -3,6 +3,7 @@
 
 #include "cmfilter/texture/box_pyramid.h"
 #include "cmfilter/texture/color_pyramid.h"
+#include "cmfilter/texture/color_pyramid_texture.h"
 #include "cmfilter/io/driver_image.h"
 #include "cmfilter/tables/gaussian_color_table_file.h"
 #include "cmfilter/texture/histogram_pyramid.h"
@@ -76,6 +77,111 @@ Expected<DriverImage> read_source_driver(const ApplyOptions& options, const Mome
     return std::move(driver->image);
 }
 
+// The level of detail clamped to [0, top], with its warning; and the output
+// size (that of level floor(lod) unless asked).
+void set_output_lod(FilteredImage& out, const ApplyOptions& options, int top, int width, int height)
+{
+    out.top_level = top;
+    const float lod = std::clamp(static_cast<float>(options.lod), 0.0f, static_cast<float>(top));
+    out.lod = lod;
+    out.lod_clamped = static_cast<double>(lod) != options.lod;
+    if (out.lod_clamped)
+        out.warnings.push_back("ApplyOptions::lod " + format_number(options.lod) + " is outside [0, " +
+                               std::to_string(top) + "] for '" + options.moments_path + "' (" + std::to_string(width) +
+                               " x " + std::to_string(height) + "); clamped to " + format_number(lod));
+    const int base = static_cast<int>(std::floor(lod));
+    out.width = options.width > 0 ? options.width : box_level_extent(width, base);
+    out.height = options.height > 0 ? options.height : box_level_extent(height, base);
+}
+
+// Every output pixel's colour, rows in parallel, progress between batches;
+// `shade(s, t, lod, row)` colours one pixel of row `row`.
+template <class Shade>
+void shade_pixels(FilteredImage& out, const ApplyOptions& options, const Shade& shade)
+{
+    const int W = out.width, H = out.height;
+    const float lod = static_cast<float>(out.lod);
+    out.rgb.assign(static_cast<std::size_t>(W) * H * 3, 0.0f);
+    const auto shade_row = [&](int y) {
+        const float t = static_cast<float>((y + 0.5) / H);
+        for (int x = 0; x < W; ++x) {
+            const float s = static_cast<float>((x + 0.5) / W);
+            const Rgb c = shade(s, t, lod, y);
+            float* p = out.rgb.data() + (static_cast<std::size_t>(y) * W + x) * 3;
+            p[0] = static_cast<float>(c.r);
+            p[1] = static_cast<float>(c.g);
+            p[2] = static_cast<float>(c.b);
+        }
+    };
+    const int batch = std::max(1, std::min(H, 4 * resolve_thread_count(options.threads)));
+    for (int y0 = 0; y0 < H; y0 += batch) {
+        const int n = std::min(batch, H - y0);
+        parallel_for(n, options.threads, [&](int i) { shade_row(y0 + i); });
+        if (options.progress) options.progress(static_cast<double>(y0 + n) / H);
+    }
+}
+
+// color-pyramid: the baked box means of C0(f), one RGB lookup a pixel,
+// through the map of the table (checked against the pyramid's digest).
+Expected<FilteredImage> apply_color_pyramid(const ApplyOptions& options, const ColorConfig& config)
+{
+    FilteredImage out;
+    out.method = options.method;
+    out.linear_space = config.scene_linear_name();
+    out.moments_path = options.moments_path;
+    out.table_path = options.table_path;
+    out.lod_requested = options.lod;
+    auto pyramid = ColorPyramidTexture::open(options.moments_path);
+    if (!pyramid) {
+        if (MomentTexture::open(options.moments_path))
+            return bad_input("ApplyOptions::method color-pyramid reads a colour pyramid, and '" + options.moments_path +
+                                 "' is a moment pyramid (bake one with bake-moments DRIVER --method color-pyramid "
+                                 "--table T.exr)",
+                             "ApplyOptions::moments_path");
+        return pyramid.error();
+    }
+    const ColorPyramidInfo& info = pyramid->info();
+    if (!info.linear_space.empty() && info.linear_space != out.linear_space)
+        return bad_input("colour pyramid '" + options.moments_path + "' holds colours in '" + info.linear_space +
+                         "', and the OpenColorIO config's scene-linear space is '" + out.linear_space +
+                         "' (expected the same: re-bake it under this config)");
+    auto table = read_gaussian_color_table(options.table_path);
+    if (!table) return table.error();
+    TableColorMapOptions mo;
+    mo.table_path = options.table_path;
+    mo.map_override = options.map_path;
+    auto map = load_table_color_map(*table, mo, config);
+    if (!map) return map.error();
+    out.map_path = map->map.provenance.path;
+    out.warnings.insert(out.warnings.end(), map->warnings.begin(), map->warnings.end());
+    if (auto st = check_color_pyramid_map(info, options.moments_path, map->map.map,
+                                          "the map of table '" + options.table_path + "' ('" + out.map_path + "')");
+        !st)
+        return st.error();
+    // What the image records of its driver, as a moment pyramid's info.
+    out.moments.width = info.width;
+    out.moments.height = info.height;
+    out.moments.levels = info.levels;
+    out.moments.wrap = info.wrap;
+    out.moments.channel = info.channel;
+    out.moments.channel_index = info.channel_index;
+    out.moments.driver_min = info.driver_min;
+    out.moments.driver_max = info.driver_max;
+    out.moments.source = info.source;
+    out.moments.source_sha256 = info.source_sha256;
+    set_output_lod(out, options, pyramid->reachable_levels() - 1, info.width, info.height);
+    std::vector<std::size_t> failed(out.height, 0);
+    shade_pixels(out, options, [&](float s, float t, float lod, int y) {
+        const ColorPyramidSample c = pyramid->lookup(s, t, lod);  // mean C0(f) over the footprint
+        if (!c.ok) ++failed[y];
+        return c.color;
+    });
+    for (std::size_t n : failed) out.failed_lookups += n;
+    if (out.failed_lookups > 0)
+        out.warnings.push_back(std::to_string(out.failed_lookups) + " texture lookups failed and were read as black");
+    return out;
+}
+
 }  // namespace
 
 const char* to_string(FilterMethod method)
@@ -86,6 +192,7 @@ const char* to_string(FilterMethod method)
     case FilterMethod::Exact: return "exact";
     case FilterMethod::Reference: return "reference";
     case FilterMethod::Mixture: return "mixture";
+    case FilterMethod::ColorPyramid: return "color-pyramid";
     }
     return "?";
 }
@@ -93,9 +200,10 @@ const char* to_string(FilterMethod method)
 Expected<FilterMethod> parse_filter_method(const std::string& name)
 {
     for (FilterMethod m : {FilterMethod::Naive, FilterMethod::Gaussian, FilterMethod::Exact, FilterMethod::Reference,
-                           FilterMethod::Mixture})
+                           FilterMethod::Mixture, FilterMethod::ColorPyramid})
         if (name == to_string(m)) return m;
-    return bad_input("unknown method '" + name + "' (expected naive, gaussian, mixture, exact or reference)");
+    return bad_input("unknown method '" + name +
+                     "' (expected naive, gaussian, mixture, exact, color-pyramid or reference)");
 }
 
 Expected<FilteredImage> apply_filter(const ApplyOptions& options, const ColorConfig& config)
@@ -110,6 +218,8 @@ Expected<FilteredImage> apply_filter(const ApplyOptions& options, const ColorCon
         return bad_input("ApplyOptions::method exact needs ApplyOptions::histograms_path (the driver's histogram "
                          "pyramid, sec. 4.1)",
                          "ApplyOptions::histograms_path");
+
+    if (options.method == FilterMethod::ColorPyramid) return apply_color_pyramid(options, config);
 
     FilteredImage out;
     out.method = options.method;
@@ -152,18 +262,7 @@ Expected<FilteredImage> apply_filter(const ApplyOptions& options, const ColorCon
     }
 
     // The level of detail: TextureSystem can reach levels 0 .. top.
-    out.top_level = moments->reachable_levels() - 1;
-    const float lod = std::clamp(static_cast<float>(options.lod), 0.0f, static_cast<float>(out.top_level));
-    out.lod = lod;
-    out.lod_clamped = static_cast<double>(lod) != options.lod;
-    if (out.lod_clamped)
-        out.warnings.push_back("ApplyOptions::lod " + format_number(options.lod) + " is outside [0, " +
-                               std::to_string(out.top_level) + "] for '" + options.moments_path + "' (" +
-                               std::to_string(info.width) + " x " + std::to_string(info.height) + "); clamped to " +
-                               format_number(lod));
-    const int base = static_cast<int>(std::floor(lod));
-    out.width = options.width > 0 ? options.width : box_level_extent(info.width, base);
-    out.height = options.height > 0 ? options.height : box_level_extent(info.height, base);
+    set_output_lod(out, options, moments->reachable_levels() - 1, info.width, info.height);
 
     // C0 itself, for the methods that evaluate it exactly.
     std::optional<TableColorMap> map;
@@ -211,48 +310,37 @@ Expected<FilteredImage> apply_filter(const ApplyOptions& options, const ColorCon
     const MomentMixtureOptions mixture_options = pyramid_mixture_options(info.driver_min, info.driver_max);
 
     // Every output pixel, rows in parallel; progress between batches of rows.
-    const int W = out.width, H = out.height;
-    out.rgb.assign(static_cast<std::size_t>(W) * H * 3, 0.0f);
+    const int H = out.height;
     std::vector<LookupCounters> counters(H);
     std::vector<std::size_t> failed(H, 0);
-    const auto shade_row = [&](int y) {
-        const float t = static_cast<float>((y + 0.5) / H);
-        std::vector<float> weights(bin_colors.size());
-        for (int x = 0; x < W; ++x) {
-            const float s = static_cast<float>((x + 0.5) / W);
-            Rgb c;
-            if (options.method == FilterMethod::Reference) {
-                c = pyramid->lookup(s, t, lod);  // mean C0(f) over the footprint
-            } else if (options.method == FilterMethod::Exact) {
-                // <C0, D> = sum_b h_b C0(v_b), exact for a box footprint (sec. 4.1).
-                if (histograms->lookup(s, t, lod, weights.data()))
-                    for (std::size_t b = 0; b < weights.size(); ++b) c += weights[b] * bin_colors[b];
-                else ++failed[y];
+    // exact: one row's histogram weights (a row is shaded on one thread).
+    std::vector<std::vector<float>> row_weights(bin_colors.empty() ? 0 : H);
+    shade_pixels(out, options, [&](float s, float t, float lod, int y) {
+        Rgb c;
+        if (options.method == FilterMethod::Reference) {
+            c = pyramid->lookup(s, t, lod);  // mean C0(f) over the footprint
+        } else if (options.method == FilterMethod::Exact) {
+            // <C0, D> = sum_b h_b C0(v_b), exact for a box footprint (sec. 4.1).
+            std::vector<float>& weights = row_weights[y];
+            weights.resize(bin_colors.size());
+            if (histograms->lookup(s, t, lod, weights.data()))
+                for (std::size_t b = 0; b < weights.size(); ++b) c += weights[b] * bin_colors[b];
+            else ++failed[y];
+        } else {
+            const MomentSample m = moments->lookup(s, t, lod);  // mean f, sigma_f (sec. 4.2)
+            if (!m.ok) ++failed[y];
+            if (options.method == FilterMethod::Naive) {
+                c = map->map.map.evaluate(m.mean);  // C0(mean f)
+            } else if (options.method == FilterMethod::Mixture) {
+                const MomentMixture mix = moment_mixture(m.mean, m.variance, m.mu3, m.mu4, mixture_options);
+                c = mix.weight * table->table.lookup(mix.lower, mix.sigma, &counters[y]);
+                if (mix.weight < 1) c += (1 - mix.weight) * table->table.lookup(mix.upper, mix.sigma, &counters[y]);
             } else {
-                const MomentSample m = moments->lookup(s, t, lod);  // mean f, sigma_f (sec. 4.2)
-                if (!m.ok) ++failed[y];
-                if (options.method == FilterMethod::Naive) {
-                    c = map->map.map.evaluate(m.mean);  // C0(mean f)
-                } else if (options.method == FilterMethod::Mixture) {
-                    const MomentMixture mix = moment_mixture(m.mean, m.variance, m.mu3, m.mu4, mixture_options);
-                    c = mix.weight * table->table.lookup(mix.lower, mix.sigma, &counters[y]);
-                    if (mix.weight < 1) c += (1 - mix.weight) * table->table.lookup(mix.upper, mix.sigma, &counters[y]);
-                } else {
-                    c = table->table.lookup(m.mean, m.sigma, &counters[y]);  // T(mean, sigma), eq. 10
-                }
+                c = table->table.lookup(m.mean, m.sigma, &counters[y]);  // T(mean, sigma), eq. 10
             }
-            float* p = out.rgb.data() + (static_cast<std::size_t>(y) * W + x) * 3;
-            p[0] = static_cast<float>(c.r);
-            p[1] = static_cast<float>(c.g);
-            p[2] = static_cast<float>(c.b);
         }
-    };
-    const int batch = std::max(1, std::min(H, 4 * resolve_thread_count(options.threads)));
-    for (int y0 = 0; y0 < H; y0 += batch) {
-        const int n = std::min(batch, H - y0);
-        parallel_for(n, options.threads, [&](int i) { shade_row(y0 + i); });
-        if (options.progress) options.progress(static_cast<double>(y0 + n) / H);
-    }
+        return c;
+    });
     for (int y = 0; y < H; ++y) {
         out.table_counters.lookups += counters[y].lookups;
         out.table_counters.sigma_clamped += counters[y].sigma_clamped;

@@ -14,6 +14,9 @@
 //              few distinct values against the map (sec. 4.1, exact solutions)
 //   reference  the box mean of C0(f) over the same footprint, from level 0
 //              (color_pyramid.h): the ground truth for a box filter
+//   color-pyramid  the same box mean baked for one map (color_pyramid_file.h):
+//              ApplyOptions::moments_path names the colour pyramid, and the
+//              table's map must be the one it was baked through
 // Every method reads its footprint with the same (s, t, lod) conventions as
 // MomentTexture::lookup, so the methods compare like with like.
 #pragma once
@@ -31,14 +34,14 @@
 
 namespace cmfilter {
 
-enum class FilterMethod { Naive, Gaussian, Exact, Reference, Mixture };
+enum class FilterMethod { Naive, Gaussian, Exact, Reference, Mixture, ColorPyramid };
 
-// "naive", "gaussian", "exact", "reference", "mixture".
+// "naive", "gaussian", "exact", "reference", "mixture", "color-pyramid".
 const char* to_string(FilterMethod method);
 Expected<FilterMethod> parse_filter_method(const std::string& name);
 
 struct ApplyOptions {
-    std::string moments_path;  // moment pyramid (bake-moments)
+    std::string moments_path;  // moment pyramid (bake-moments); color-pyramid: the colour pyramid
     std::string table_path;    // Gaussian colour table (bake-colormap)
     double lod = 0;            // clamped to [0, top reachable level], with a warning
     FilterMethod method = FilterMethod::Gaussian;

@@ -2,6 +2,7 @@
 #include "cmfilter/ops/method_choice.h"
 
 #include "cmfilter/ops/image_comparison.h"
+#include "cmfilter/texture/color_pyramid_texture.h"
 #include "cmfilter/texture/histogram_pyramid.h"
 #include "cmfilter/texture/moment_texture.h"
 #include "cmfilter/util/stopwatch.h"
@@ -22,11 +23,12 @@ int method_rank(FilterMethod m)
     switch (m) {
     case FilterMethod::Naive: return 0;
     case FilterMethod::Gaussian: return 1;
-    case FilterMethod::Mixture: return 2;
-    case FilterMethod::Exact: return 3;
-    case FilterMethod::Reference: return 4;
+    case FilterMethod::ColorPyramid: return 2;
+    case FilterMethod::Mixture: return 3;
+    case FilterMethod::Exact: return 4;
+    case FilterMethod::Reference: return 5;
     }
-    return 5;
+    return 6;
 }
 
 std::string short_number(double v)
@@ -74,7 +76,7 @@ Expected<MethodChoice> choose_filter_method(const ApplyOptions& base, const Colo
     for (FilterMethod m : options.candidates)
         if (m == FilterMethod::Reference)
             return bad_input("MethodChoiceOptions::candidates holds reference, the measure of the others "
-                             "(expected naive, gaussian, mixture or exact)",
+                             "(expected naive, gaussian, color-pyramid, mixture or exact)",
                              "MethodChoiceOptions::candidates");
 
     auto moments = MomentTexture::open(base.moments_path);
@@ -99,13 +101,26 @@ Expected<MethodChoice> choose_filter_method(const ApplyOptions& base, const Colo
     // The candidates, each with what a renderer stores per texel for it.
     std::vector<FilterMethod> wanted = options.candidates;
     if (wanted.empty())
-        wanted = {FilterMethod::Naive, FilterMethod::Gaussian, FilterMethod::Mixture, FilterMethod::Exact};
+        wanted = {FilterMethod::Naive, FilterMethod::Gaussian, FilterMethod::ColorPyramid, FilterMethod::Mixture,
+                  FilterMethod::Exact};
     const bool asked = !options.candidates.empty();
     std::size_t bins = 0;
     if (!base.histograms_path.empty()) {
         auto h = HistogramTexture::open(base.histograms_path);
         if (!h) return h.error();
         bins = h->info().values.size();
+    }
+    std::optional<ColorPyramidInfo> color_pyramid;
+    if (!options.color_pyramid_path.empty()) {
+        auto p = ColorPyramidTexture::open(options.color_pyramid_path);
+        if (!p) return p.error();
+        if (p->info().width != moments->info().width || p->info().height != moments->info().height)
+            return bad_input("colour pyramid '" + options.color_pyramid_path + "' is " +
+                                 std::to_string(p->info().width) + " x " + std::to_string(p->info().height) + " but '" +
+                                 base.moments_path + "' is " + std::to_string(moments->info().width) + " x " +
+                                 std::to_string(moments->info().height) + " (expected the same driver)",
+                             "MethodChoiceOptions::color_pyramid_path");
+        color_pyramid = p->info();
     }
     for (FilterMethod m : wanted) {
         if (std::any_of(out.trials.begin(), out.trials.end(), [m](const MethodTrial& t) { return t.method == m; }))
@@ -128,6 +143,16 @@ Expected<MethodChoice> choose_filter_method(const ApplyOptions& base, const Colo
             }
             t.bytes_per_texel = 16;
             t.table_lookups = 2;
+            break;
+        case FilterMethod::ColorPyramid:
+            if (!color_pyramid) {
+                const std::string why = "color-pyramid: no colour pyramid of the driver through this map "
+                                        "(MethodChoiceOptions::color_pyramid_path)";
+                if (asked) return bad_input(why, "MethodChoiceOptions::color_pyramid_path");
+                out.skipped.push_back(why);
+                continue;
+            }
+            t.bytes_per_texel = color_pyramid->bytes_per_texel();
             break;
         case FilterMethod::Exact:
             if (bins == 0) {
@@ -159,6 +184,7 @@ Expected<MethodChoice> choose_filter_method(const ApplyOptions& base, const Colo
         out.reference_ms += reference_time.elapsed_ms();
         for (MethodTrial& t : out.trials) {
             run.method = t.method;
+            run.moments_path = t.method == FilterMethod::ColorPyramid ? options.color_pyramid_path : base.moments_path;
             const Stopwatch time;
             auto image = apply_filter(run, config);
             if (!image) return image.error();

@@ -10,6 +10,9 @@
 // and its error overall the worst of them. The candidates, cheapest first:
 //   naive     mean f alone (one float32 channel: 4 bytes per texel)
 //   gaussian  mean f, mean f^2 (8 bytes) and one table lookup
+//   color-pyramid  the box means of C0(f) baked for this map (12 bytes in
+//             float32, 6 in half, color_pyramid_file.h), one RGB lookup and
+//             no table; exact up to its storage, but tied to the map
 //   mixture   four moments (16 bytes, bake-moments --order 4), two lookups
 //   exact     the histogram pyramid, one float32 weight per distinct value
 //             (4 B bytes for B values) and no table
@@ -36,9 +39,14 @@ struct MethodChoiceOptions {
     // Each finite and >= 0; LODs above the top level are dropped.
     std::vector<double> lods;
     // The methods tried; empty: every one the inputs allow (naive,
-    // gaussian, mixture when the moments are of order 4, exact when
-    // ApplyOptions::histograms_path is set). Reference is not a candidate.
+    // gaussian, color-pyramid with color_pyramid_path, mixture when the
+    // moments are of order 4, exact when ApplyOptions::histograms_path is
+    // set). Reference is not a candidate.
     std::vector<FilterMethod> candidates;
+    // A colour pyramid of the same driver through the table's map
+    // (color_pyramid_file.h): the candidate color-pyramid, measured as
+    // apply reads it; empty: not a candidate (said in MethodChoice::skipped).
+    std::string color_pyramid_path;
     // Optional: the fraction of the LODs measured, from the calling thread.
     std::function<void(double fraction)> progress;
 };

@@ -13,6 +13,7 @@ const char* to_string(RenderMethod method)
     case RenderMethod::Supersample: return "supersample";
     case RenderMethod::Reference: return "reference";
     case RenderMethod::Mixture: return "mixture";
+    case RenderMethod::ColorPyramid: return "color-pyramid";
     }
     return "gaussian";
 }
@@ -21,11 +22,11 @@ Expected<RenderMethod> parse_render_method(const std::string& text)
 {
     for (RenderMethod m :
          {RenderMethod::Naive, RenderMethod::Gaussian, RenderMethod::GaussianExact, RenderMethod::Exact,
-          RenderMethod::Supersample, RenderMethod::Reference, RenderMethod::Mixture})
+          RenderMethod::Supersample, RenderMethod::Reference, RenderMethod::Mixture, RenderMethod::ColorPyramid})
         if (text == to_string(m)) return m;
     return bad_input(
         "method '" + text +
-        "' is unknown (expected naive, gaussian, gaussian-exact, mixture, exact, supersample or reference)");
+        "' is unknown (expected naive, gaussian, gaussian-exact, mixture, color-pyramid, exact, supersample or reference)");
 }
 
 Status check_render_samples(int samples)

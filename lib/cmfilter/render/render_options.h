@@ -20,7 +20,9 @@ namespace cmfilter {
 // Mixture: texture drivers with four moments (math/moment_mixture.h, as
 // apply's); noise drivers as a mixture over sub-footprints in the transition
 // (noise/noise_sub_footprints.h); every other driver as Gaussian.
-enum class RenderMethod { Naive, Gaussian, GaussianExact, Exact, Supersample, Reference, Mixture };
+// ColorPyramid: texture drivers alone, from the box means of C0(f) of their
+// level 0 (texture/color_pyramid.h); refused for any other driver.
+enum class RenderMethod { Naive, Gaussian, GaussianExact, Exact, Supersample, Reference, Mixture, ColorPyramid };
 const char* to_string(RenderMethod method);
 Expected<RenderMethod> parse_render_method(const std::string& text);
 

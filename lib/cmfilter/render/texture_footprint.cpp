@@ -36,7 +36,7 @@ Rgb histogram_color(const HistogramTexture& histograms, double u, double v, doub
 TextureFootprint filter_texture_footprint(const ColorLayer& color, const FilteredTexture& texture,
                                           const HistogramTexture* histograms, const SurfaceHit& h, TextureColor colour,
                                           FootprintWidth width, int max_probes, const std::vector<Rgb>& bin_colors,
-                                          std::vector<float>& weights)
+                                          std::vector<float>& weights, const ColorPyramid* color_pyramid)
 {
     TextureFootprint out;
     const FootprintProbes probes = footprint_probes(h.du_dx, h.dv_dx, h.du_dy, h.dv_dy, max_probes, width);
@@ -65,6 +65,13 @@ TextureFootprint filter_texture_footprint(const ColorLayer& color, const Filtere
         case TextureColor::Exact:
             out.albedo += histogram_color(*histograms, u, v, lookup_lod, bin_colors, weights);
             break;
+        case TextureColor::ColorPyramid: {
+            // The reachable levels, as the pyramids' TextureSystem lookups.
+            const double top = texture.moments().reachable_levels() - 1;
+            const double level = std::isfinite(lookup_lod) ? std::clamp(lookup_lod, 0.0, top) : 0.0;
+            out.albedo += color_pyramid->lookup(u, v, level);
+            break;
+        }
         }
     }
     const double n = probes.count;

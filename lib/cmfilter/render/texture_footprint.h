@@ -17,7 +17,10 @@
 //             math/moment_mixture.h), each through gaussian_albedo;
 //   exact     sum_b h_b C0(v_b) (sec. 4.1), h_b the probe's histogram, a
 //             trilinear lookup of the histogram pyramid at the same LOD
-//             (needs the texture's histogram pyramid).
+//             (needs the texture's histogram pyramid);
+//   color-pyramid  mean C0(f) over the probe, a trilinear lookup of the
+//             driver's colour pyramid (texture/color_pyramid.h: the box
+//             means of C0(f) of its level 0) at the same LOD.
 // The pixel's albedo is the mean of its probes' colours: a thin footprint
 // near the horizon keeps what varies across it. For a footprint made of
 // squares aligned with a pyramid level (a probe width of 2^k level-0 texels
@@ -30,6 +33,7 @@
 #include "cmfilter/scene/surface_hit.h"
 #include "cmfilter/tables/color_layer.h"
 #include "cmfilter/tables/gaussian_albedo.h"
+#include "cmfilter/texture/color_pyramid.h"
 #include "cmfilter/texture/filtered_texture.h"
 #include "cmfilter/texture/histogram_pyramid.h"
 
@@ -37,7 +41,7 @@
 
 namespace cmfilter {
 
-enum class TextureColor { None, Naive, Gaussian, Mixture, Exact };
+enum class TextureColor { None, Naive, Gaussian, Mixture, Exact, ColorPyramid };
 
 struct TextureFootprint {
     Rgb albedo;        // mean of the probes' colours (black for TextureColor::None)
@@ -50,10 +54,12 @@ struct TextureFootprint {
 
 // `color`: C0 and its table over the texture's values; `histograms`: the
 // texture's histogram pyramid (Exact only); `bin_colors`: C0(v_b) for its
-// values (Exact only); `weights`: scratch space for the histogram weights.
+// values (Exact only); `weights`: scratch space for the histogram weights;
+// `color_pyramid`: the texture's colour pyramid through C0 (ColorPyramid
+// only).
 TextureFootprint filter_texture_footprint(const ColorLayer& color, const FilteredTexture& texture,
                                           const HistogramTexture* histograms, const SurfaceHit& h, TextureColor colour,
                                           FootprintWidth width, int max_probes, const std::vector<Rgb>& bin_colors,
-                                          std::vector<float>& weights);
+                                          std::vector<float>& weights, const ColorPyramid* color_pyramid = nullptr);
 
 }  // namespace cmfilter

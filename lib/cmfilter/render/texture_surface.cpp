@@ -3,6 +3,7 @@
 
 #include "cmfilter/render/texture_footprint.h"
 
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -19,6 +20,7 @@ TextureColor texture_color(RenderMethod method)
     case RenderMethod::GaussianExact: return TextureColor::Gaussian;
     case RenderMethod::Exact: return TextureColor::Exact;
     case RenderMethod::Mixture: return TextureColor::Mixture;
+    case RenderMethod::ColorPyramid: return TextureColor::ColorPyramid;
     default: return TextureColor::None;
     }
 }
@@ -26,8 +28,9 @@ TextureColor texture_color(RenderMethod method)
 class TextureRenderer : public DriverRenderer {
 public:
     TextureRenderer(const ColorLayer& color, const TextureDriver& driver, RenderMethod method,
-                    std::vector<Rgb> bin_colors, int max_probes)
-        : color_(color), driver_(driver), method_(method), bin_colors_(std::move(bin_colors)), max_probes_(max_probes)
+                    std::vector<Rgb> bin_colors, std::optional<ColorPyramid> color_pyramid, int max_probes)
+        : color_(color), driver_(driver), method_(method), bin_colors_(std::move(bin_colors)),
+          color_pyramid_(std::move(color_pyramid)), max_probes_(max_probes)
     {
     }
 
@@ -35,10 +38,10 @@ public:
     {
         // Its pyramids looked up by probes along the footprint's major edge
         // (texture_footprint.h); supersampled pixels take only the AOVs.
-        const TextureFootprint f =
-            filter_texture_footprint(color_, driver_.texture, driver_.histograms ? &*driver_.histograms : nullptr, h,
-                                     context.supersampled ? TextureColor::None : texture_color(method_),
-                                     context.options.footprint, max_probes_, bin_colors_, scratch.weights);
+        const TextureFootprint f = filter_texture_footprint(
+            color_, driver_.texture, driver_.histograms ? &*driver_.histograms : nullptr, h,
+            context.supersampled ? TextureColor::None : texture_color(method_), context.options.footprint, max_probes_,
+            bin_colors_, scratch.weights, color_pyramid_ ? &*color_pyramid_ : nullptr);
         scratch.counts.footprints += f.counts.footprints;
         scratch.counts.plain += f.counts.plain;
         return {f.albedo, f.mean, f.sigma, f.lod};
@@ -50,7 +53,8 @@ private:
     const ColorLayer& color_;
     const TextureDriver& driver_;
     RenderMethod method_;
-    std::vector<Rgb> bin_colors_;  // exact: C0 at the histogram's distinct values
+    std::vector<Rgb> bin_colors_;                // exact: C0 at the histogram's distinct values
+    std::optional<ColorPyramid> color_pyramid_;  // color-pyramid: C0(f) box-mipped
     int max_probes_;
 };
 
@@ -81,8 +85,29 @@ Expected<std::unique_ptr<DriverRenderer>> make_texture_renderer(const Material& 
                              ": exact needs the texture's histogram pyramid (MaterialOptions::histograms)");
         for (double v : driver.histograms->info().values) bin_colors.push_back(material.color.map.evaluate(v));
     }
-    return std::unique_ptr<DriverRenderer>(std::make_unique<TextureRenderer>(
-        material.color, driver, colour_method, std::move(bin_colors), max_probes_of(options, surface)));
+    // color-pyramid: C0(f) of level 0 box-mipped through the material's map,
+    // the pyramid bake-moments --method color-pyramid writes for it.
+    std::optional<ColorPyramid> color_pyramid;
+    if (colour_method == RenderMethod::ColorPyramid) {
+        if (!driver.texture.has_level0())
+            return io_error(material.provenance.missing_driver +
+                            "; color-pyramid maps the driver's texels through C0 (naive and gaussian need only the "
+                            "moments): re-bake the moments from the driver where it is now, or name the driver "
+                            "itself with driver/image");
+        const MomentPyramidInfo& info = driver.texture.moments().info();
+        ColorPyramidOptions po;
+        po.driver = driver.texture.level0();
+        po.width = info.width;
+        po.height = info.height;
+        po.map = &material.color.map;
+        po.wrap = info.wrap;
+        po.reference = info.reference;
+        po.threads = options.threads;
+        color_pyramid = ColorPyramid::build(po);
+    }
+    return std::unique_ptr<DriverRenderer>(
+        std::make_unique<TextureRenderer>(material.color, driver, colour_method, std::move(bin_colors),
+                                          std::move(color_pyramid), max_probes_of(options, surface)));
 }
 
 }  // namespace cmfilter

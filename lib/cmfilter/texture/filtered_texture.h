@@ -43,6 +43,9 @@ public:
     MomentSample filter(double u, double v, double w) const;
     // Whether the level-0 texels are here (value() needs them).
     bool has_level0() const { return level0_ != nullptr; }
+    // The level-0 texels (width() x height(), row-major, top row first), or
+    // null without them.
+    const std::vector<float>* level0() const { return level0_.get(); }
     // How many distinct values level 0 holds (0 without level 0).
     std::size_t distinct_values() const;
     // f at (u, v), bilinear in level 0; the reference value c without level 0.

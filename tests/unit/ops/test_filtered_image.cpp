@@ -9,6 +9,7 @@
 #include "cmfilter/ops/filtered_image.h"
 #include "cmfilter/ops/filtered_image_file.h"
 #include "cmfilter/tables/gaussian_color_table_file.h"
+#include "cmfilter/ops/table_color_pyramid.h"
 #include "cmfilter/texture/histogram_pyramid.h"
 #include "cmfilter/texture/moment_pyramid.h"
 
@@ -76,6 +77,60 @@ TEST_CASE("apply reference equals brute-force box means of C0(f), 13 x 7 driver"
         CHECK(worst_error(img, [&](int x, int y) { return box_mean_color(m, f, W, H, img.width, img.height, x, y); }) <=
               1e-6);
     }
+}
+
+TEST_CASE("apply color-pyramid equals brute-force box means of C0(f), and the reference between levels")
+{
+    // 13 x 7 (not a power of two), values beyond the map's domain on both
+    // sides (clamped by C0), baked through the table's map.
+    const int W = 13, H = 7;
+    std::vector<float> f(W * H);
+    for (int i = 0; i < W * H; ++i) f[i] = static_cast<float>(0.5 + 0.7 * std::sin(0.9 * i + 0.3 * (i % 4)));
+    ApplyOptions options = apply_inputs(kDir, "pyramid", f, W, H, {});
+    TableColorPyramidOptions bake;
+    bake.bake.driver_path = kDir + "/pyramid-driver.exr";
+    bake.bake.output_path = kDir + "/pyramid-colors.exr";
+    bake.table_path = options.table_path;
+    auto baked = bake_table_color_pyramid(bake, builtin_color_config());
+    REQUIRE(baked);
+    ApplyOptions colors = options;
+    colors.moments_path = bake.bake.output_path;
+    const ReferenceMap m = reference_map();
+    for (int k = 0; k <= 2; ++k) {
+        CAPTURE(k);
+        const FilteredImage img = apply(colors, FilterMethod::ColorPyramid, k);
+        REQUIRE(img.width == std::max(1, W >> k));
+        REQUIRE(img.height == std::max(1, H >> k));
+        CHECK(worst_error(img, [&](int x, int y) { return box_mean_color(m, f, W, H, img.width, img.height, x, y); }) <=
+              1e-6);
+    }
+    for (double lod : {0.5, 1.25}) {
+        CAPTURE(lod);
+        const FilteredImage got = apply(colors, FilterMethod::ColorPyramid, lod);
+        const FilteredImage reference = apply(options, FilterMethod::Reference, lod);
+        REQUIRE(got.rgb.size() == reference.rgb.size());
+        double worst = 0;
+        for (std::size_t i = 0; i < got.rgb.size(); ++i)
+            worst = std::max(worst, double(std::abs(got.rgb[i] - reference.rgb[i])));
+        CHECK(worst <= 1e-6);
+    }
+
+    // Through another table's map (one colour changed): refused, naming
+    // the pyramid; a moment pyramid read as a colour pyramid: refused.
+    std::vector<float> other = kMap;
+    other[4] = 0.7f;
+    ApplyOptions changed = apply_inputs(kDir, "pyramid-other", f, W, H, {}, 2, 0, other);
+    changed.moments_path = colors.moments_path;
+    changed.method = FilterMethod::ColorPyramid;
+    auto refused = apply_filter(changed, builtin_color_config());
+    REQUIRE_FALSE(refused);
+    CHECK(refused.error().message.find("'" + colors.moments_path + "' was baked through another colour map") !=
+          std::string::npos);
+    ApplyOptions moments = options;
+    moments.method = FilterMethod::ColorPyramid;
+    auto wrong_kind = apply_filter(moments, builtin_color_config());
+    REQUIRE_FALSE(wrong_kind);
+    CHECK(wrong_kind.error().message.find("is a moment pyramid") != std::string::npos);
 }
 
 TEST_CASE("apply exact equals brute-force box means of C0(f) for a driver with few values")

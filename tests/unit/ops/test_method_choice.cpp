@@ -9,6 +9,7 @@
 // bad options naming their field.
 #include "cmfilter/color/ciede2000.h"
 #include "cmfilter/ops/method_choice.h"
+#include "cmfilter/texture/color_pyramid_file.h"
 #include "cmfilter/texture/histogram_pyramid.h"
 
 #include "apply_inputs.h"
@@ -118,12 +119,15 @@ TEST_CASE("method choice: a two-valued driver needs the mixture or the histogram
     const ApplyOptions in = apply_inputs(kDir, "two", f, kSize, kSize, {}, 4);
     {
         const MethodChoice c = choose(in, 0.5);
-        REQUIRE(c.trials.size() == 3);  // no histograms: exact is skipped, and says why
+        // No histograms and no colour pyramid: exact and color-pyramid are
+        // skipped, and say why.
+        REQUIRE(c.trials.size() == 3);
         CHECK(c.trials[0].method == FilterMethod::Naive);
         CHECK(c.trials[1].method == FilterMethod::Gaussian);
         CHECK(c.trials[2].method == FilterMethod::Mixture);
-        REQUIRE(c.skipped.size() == 1);
-        CHECK(c.skipped[0].find("ApplyOptions::histograms_path") != std::string::npos);
+        REQUIRE(c.skipped.size() == 2);
+        CHECK(c.skipped[0].find("MethodChoiceOptions::color_pyramid_path") != std::string::npos);
+        CHECK(c.skipped[1].find("ApplyOptions::histograms_path") != std::string::npos);
         // Two values: the mixture's two components are the two values
         // (math/moment_mixture.h), so only the table's interpolation is left;
         // one Gaussian spreads the mass between them.
@@ -149,6 +153,47 @@ TEST_CASE("method choice: a two-valued driver needs the mixture or the histogram
         REQUIRE(c.choice());
         CHECK(c.choice()->method == FilterMethod::Exact);
     }
+}
+
+TEST_CASE("method choice: a colour pyramid of the map is exact at 12 bytes, before the mixture's 16")
+{
+    const std::vector<float> f = two_valued();
+    const ApplyOptions in = apply_inputs(kDir, "pyramid", f, kSize, kSize, {}, 4);
+    ColorMap map;
+    for (const Rgb3& c : reference_map().texels) map.texels.push_back({c[0], c[1], c[2]});
+    ColorPyramidBakeOptions bake;
+    bake.driver_path = kDir + "/pyramid-driver.exr";
+    bake.output_path = kDir + "/pyramid-colors.exr";
+    bake.map = &map;
+    REQUIRE(bake_color_pyramid(bake));
+    MethodChoiceOptions o;
+    o.tolerance = 0.5;
+    o.lods = {1, 2, 3};
+    o.color_pyramid_path = bake.output_path;
+    auto c = choose_filter_method(in, builtin_color_config(), o);
+    REQUIRE(c);
+    REQUIRE(c->trials.size() == 4);
+    CHECK(c->trials[2].method == FilterMethod::ColorPyramid);
+    CHECK(c->trials[2].bytes_per_texel == 12);
+    CHECK(c->trials[3].method == FilterMethod::Mixture);
+    // Independently: naive's error is the brute-force one, so the levels are
+    // the same; the colour pyramid's is float rounding of those box means.
+    CHECK(trial(*c, FilterMethod::Naive).errors[0] == doctest::Approx(naive_error(f, 1)).epsilon(1e-4));
+    CHECK(trial(*c, FilterMethod::ColorPyramid).worst < 1e-3);
+    CHECK(trial(*c, FilterMethod::Gaussian).worst > 1);
+    REQUIRE(c->choice());
+    CHECK(c->choice()->method == FilterMethod::ColorPyramid);
+
+    // Baked through another map: refused, naming the difference.
+    ColorMap other = map;
+    other.texels[2].r += 0.2;
+    bake.map = &other;
+    bake.output_path = kDir + "/pyramid-other.exr";
+    REQUIRE(bake_color_pyramid(bake));
+    o.color_pyramid_path = bake.output_path;
+    auto refused = choose_filter_method(in, builtin_color_config(), o);
+    REQUIRE_FALSE(refused);
+    CHECK(refused.error().message.find("another colour map") != std::string::npos);
 }
 
 TEST_CASE("method choice: nothing meets, and the message says what came closest and what was not tried")

@@ -721,3 +721,82 @@ TEST_CASE("exact follows an anisotropic footprint: the box mean of C0 over a foo
     CHECK(worst[0] < 1e-4);
     CHECK(worst[1] > 1e-2);
 }
+
+TEST_CASE("color-pyramid is the box mean of C0 over a footprint of aligned squares, for a driver of any values")
+{
+    // The aligned straight-down scene of the exact case (each pixel a box of
+    // 32 x 32 texels, level 5) and the anisotropic strip, with a driver of
+    // many values through the same map.
+    auto config = ColorConfig::load("");
+    REQUIRE(config);
+    const int n = 512;
+    // Constant over blocks of 16 x 16 texels (as the exact case's), so that
+    // a hit a little off a texel centre reads the same texels, but 1024
+    // distinct values (no histogram pyramid can hold them).
+    const auto block_driver = [](int size) {
+        std::vector<float> v(static_cast<std::size_t>(size) * size);
+        for (int y = 0; y < size; ++y)
+            for (int x = 0; x < size; ++x) {
+                const unsigned k = static_cast<unsigned>(x / 16) * 73856093u ^
+                                   static_cast<unsigned>(y / 16) * 19349663u;
+                v[static_cast<std::size_t>(y) * size + x] = static_cast<float>((k >> 4) % 4096) / 4096.0f;
+            }
+        return v;
+    };
+    const std::vector<float> f = block_driver(n);
+    const double d = 1 / std::tan(kTwoPi / 24);
+    const Scene scene = texture_scene(write_driver("smooth.exr", n, n, f), {0, d, 0}, {0, 0, 0}, {0, 0, 1}, 1, 32, 32);
+    auto materials = prepare_materials(scene, *config, MaterialOptions{});
+    REQUIRE(materials);
+    RenderOptions options;
+    options.method = RenderMethod::ColorPyramid;
+    auto pyramid = render(scene, *materials, options);
+    options.method = RenderMethod::Gaussian;
+    auto gaussian = render(scene, *materials, options);
+    REQUIRE(pyramid);
+    REQUIRE(gaussian);
+    CHECK(pyramid->method == RenderMethod::ColorPyramid);
+    auto camera = Camera::create(scene.camera);
+    REQUIRE(camera);
+    double worst = 0, worst_gaussian = 0;
+    for (int y = 0; y < 32; ++y)
+        for (int x = 0; x < 32; ++x) {
+            const Rgb want = aligned_box_mean(scene, *camera, (*materials)[0].color.map, f, n, x, y);
+            const std::size_t p = static_cast<std::size_t>(y) * 32 + static_cast<std::size_t>(x);
+            for (int ch = 0; ch < 3; ++ch) {
+                worst = std::max(worst, std::abs(pyramid->rgb[3 * p + ch] - want[ch]));
+                worst_gaussian = std::max(worst_gaussian, std::abs(gaussian->rgb[3 * p + ch] - want[ch]));
+            }
+        }
+    MESSAGE("color-pyramid vs the box mean of C0 over the texels: largest difference " << worst << " (gaussian "
+                                                                                       << worst_gaussian << ")");
+    CHECK(worst < 1e-4);
+    CHECK(worst_gaussian > 1e-2);
+
+    // The strip: four probes of 8 x 8 texels along the footprint.
+    const std::vector<float> g = block_driver(kStripN);
+    const Scene strip = strip_scene(write_driver("strip-smooth.exr", kStripN, kStripN, g));
+    auto strip_materials = prepare_materials(strip, *config, MaterialOptions{});
+    REQUIRE(strip_materials);
+    auto strip_camera = Camera::create(strip.camera);
+    REQUIRE(strip_camera);
+    options.method = RenderMethod::ColorPyramid;
+    options.max_probes = 4;
+    auto along = render(strip, *strip_materials, options);
+    REQUIRE(along);
+    double strip_worst = 0;
+    for (int y = 0; y < kStripPixels; ++y)
+        for (int x = 0; x < kStripPixels; ++x) {
+            const auto hit = intersect_scene(strip, strip_camera->ray(x + 0.5, y + 0.5));
+            REQUIRE(hit);
+            Rgb want;
+            for_footprint_texels(hit->hit.u, hit->hit.v, [&](long tx, long ty) {
+                want += (1.0 / 256) *
+                        (*strip_materials)[0].color.map.evaluate(g[static_cast<std::size_t>(ty * kStripN + tx)]);
+            });
+            const std::size_t p = static_cast<std::size_t>(y) * kStripPixels + static_cast<std::size_t>(x);
+            for (int ch = 0; ch < 3; ++ch)
+                strip_worst = std::max(strip_worst, std::abs(along->rgb[3 * p + ch] - want[ch]));
+        }
+    CHECK(strip_worst < 1e-4);
+}
