@@ -121,9 +121,8 @@ void shade_pixels(FilteredImage& out, const ApplyOptions& options, const Shade& 
     }
 }
 
-// color-pyramid: the baked box means of C0(f), one RGB lookup a pixel,
-// through the map of the table (checked against the pyramid's digest).
-Expected<FilteredImage> apply_color_pyramid(const ApplyOptions& options, const ColorConfig& config)
+// What every method's image says of its inputs before it is shaded.
+FilteredImage image_of(const ApplyOptions& options, const ColorConfig& config)
 {
     FilteredImage out;
     out.method = options.method;
@@ -131,6 +130,14 @@ Expected<FilteredImage> apply_color_pyramid(const ApplyOptions& options, const C
     out.moments_path = options.moments_path;
     out.table_path = options.table_path;
     out.lod_requested = options.lod;
+    return out;
+}
+
+// color-pyramid: the baked box means of C0(f), one RGB lookup a pixel,
+// through the map of the table (checked against the pyramid's digest).
+Expected<FilteredImage> apply_color_pyramid(const ApplyOptions& options, const ColorConfig& config)
+{
+    FilteredImage out = image_of(options, config);
     auto pyramid = ColorPyramidTexture::open(options.moments_path);
     if (!pyramid) {
         if (MomentTexture::open(options.moments_path))
@@ -221,12 +228,7 @@ Expected<FilteredImage> apply_filter(const ApplyOptions& options, const ColorCon
 
     if (options.method == FilterMethod::ColorPyramid) return apply_color_pyramid(options, config);
 
-    FilteredImage out;
-    out.method = options.method;
-    out.linear_space = config.scene_linear_name();
-    out.moments_path = options.moments_path;
-    out.table_path = options.table_path;
-    out.lod_requested = options.lod;
+    FilteredImage out = image_of(options, config);
 
     auto moments = MomentTexture::open(options.moments_path);
     if (!moments) return moments.error();
