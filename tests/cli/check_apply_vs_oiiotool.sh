@@ -16,6 +16,7 @@
 # are the --colormap knots in FIXTURES/apply-map-knots.txt.
 set -eu
 cmf=$1; oiiotool=$2; maketx=$3; fix=$4; out=$5/apply-vs-oiiotool
+rm -rf "$out"
 mkdir -p "$out"
 n=8
 "$cmf" bake-colormap "$fix/apply-map.exr" -o "$out/table.exr" -q
@@ -33,6 +34,9 @@ diff_images() {
   "$oiiotool" --warn 1e-4 --fail 1e-4 --hardfail 1e-4 "$1" "$2" --diff
 }
 fail=0
+for k in 0 1 2 3 4 5; do
+  "$oiiotool" "$out/mapped.tx" --selectmip $k -o "$out/maketx-$k.exr"
+done
 "$cmf" bake-moments "$fix/apply-driver.exr" --method color-pyramid --table "$out/table.exr" -o "$out/colors.exr" -q
 for k in 0 1 2 3 4 5; do
   "$oiiotool" "$out/colors.exr" --selectmip $k -o "$out/colors-$k.exr"
@@ -44,7 +48,6 @@ done
 for k in 0 1 2 3 4 5; do
   "$cmf" apply --moments "$out/moments.exr" --table "$out/table.exr" --lod $k \
       --method reference -o "$out/reference-$k.exr" -q 2> /dev/null
-  "$oiiotool" "$out/mapped.tx" --selectmip $k -o "$out/maketx-$k.exr"
   diff_images "$out/reference-$k.exr" "$out/maketx-$k.exr" || { echo "FAIL at lod $k"; fail=1; }
 done
 "$cmf" apply --moments "$out/moments.exr" --table "$out/table.exr" --lod 1.5 \
