@@ -7,6 +7,7 @@
 #include "cmfilter/ops/filtered_image.h"
 #include "cmfilter/ops/method_choice.h"
 #include "cmfilter/ops/table_color_pyramid.h"
+#include "cmfilter/ops/table_segment_pyramid.h"
 #include "cmfilter/ops/image_comparison.h"
 
 #include <pybind11/stl.h>
@@ -126,7 +127,7 @@ void bind_ops(py::module_& m)
         py::arg("histograms") = "", py::arg("ocio_config") = "", py::arg("threads") = 0,
         "The filtered image of a moment pyramid's driver through a table's colour map at level of detail lod, by "
         "naive, gaussian, mixture (an order-4 pyramid), exact, color-pyramid (moments names a colour pyramid, "
-        "bake_color_pyramid) or reference (as `cmfilter apply`): (H, W, 3) float32 scene-linear; warnings "
+        "bake_color_pyramid), segments (moments names a segment pyramid, bake_segment_pyramid) or reference (as `cmfilter apply`): (H, W, 3) float32 scene-linear; warnings "
         "(a clamped lod, lookups outside the table) as Python warnings.");
 
     m.def(
@@ -163,11 +164,51 @@ void bind_ops(py::module_& m)
         "wrote; apply(output, table, method='color-pyramid') reads it.");
 
     m.def(
+        "bake_segment_pyramid",
+        [](const std::string& driver, const std::string& output, const std::vector<std::string>& tables,
+           double tolerance, int max_channels, const std::string& channel, const std::string& wrap,
+           const std::string& nonfinite, const std::string& pixel_type, const std::string& ocio_config, int threads) {
+        TableSegmentPyramidOptions options;
+        set_pyramid_bake_options(options.bake, driver, output, channel, wrap, nonfinite, threads);
+        options.bake.storage.pixel_type = unwrap(parse_exr_pixel_type(pixel_type));
+        options.bake.tolerance_de = tolerance;
+        options.bake.max_channels = max_channels;
+        options.table_paths = tables;
+        const ColorConfig config = load_config(ocio_config);
+        TableSegmentPyramid baked = [&] {
+            py::gil_scoped_release release;
+            return unwrap(bake_table_segment_pyramid(options, config));
+        }();
+        warn_all(baked.warnings);
+        const SegmentPyramidInfo& info = baked.result.info;
+        py::dict out;
+        out["output"] = output;
+        out["width"] = info.width;
+        out["height"] = info.height;
+        out["levels"] = info.levels;
+        out["breakpoints"] = info.breakpoints;
+        out["channels"] = info.channels();
+        out["candidates"] = baked.result.selection.candidates;
+        out["maps"] = baked.map_paths;
+        out["fit_de"] = baked.result.selection.max_de;
+        out["mean_de"] = baked.result.selection.mean_de;
+        out["bytes_per_texel"] = info.bytes_per_texel();
+        return out;
+        },
+        py::arg("driver"), py::arg("output"), py::kw_only(), py::arg("tables"), py::arg("tolerance") = 0.0,
+        py::arg("max_channels") = 0, py::arg("channel") = "", py::arg("wrap") = "clamp", py::arg("nonfinite") = "error",
+        py::arg("pixel_type") = "float", py::arg("ocio_config") = "", py::arg("threads") = 0,
+        "Bakes the segment pyramid of a driver image for the breakpoints of the colour maps of `tables` (as "
+        "`cmfilter bake-moments --segments`; tolerance > 0: the fewest breakpoints within that mean CIEDE2000 "
+        "over the driver) into `output` (.exr): a dict of what it wrote; apply(output, table, method='segments') "
+        "reads it with any map on those breakpoints.");
+
+    m.def(
         "choose_method",
         [](const std::string& moments, const std::string& table, double tolerance, const std::vector<double>& lods,
            const std::vector<std::string>& candidates, const std::string& colormap, const std::string& driver,
-           const std::string& histograms, const std::string& color_pyramid, const std::string& ocio_config,
-           int threads) {
+           const std::string& histograms, const std::string& color_pyramid, const std::string& segment_pyramid,
+           const std::string& ocio_config, int threads) {
         ApplyOptions inputs;
         inputs.moments_path = moments;
         inputs.table_path = table;
@@ -179,6 +220,7 @@ void bind_ops(py::module_& m)
         options.tolerance = tolerance;
         options.lods = lods;
         options.color_pyramid_path = color_pyramid;
+        options.segment_pyramid_path = segment_pyramid;
         for (const std::string& c : candidates) options.candidates.push_back(unwrap(parse_filter_method(c)));
         const ColorConfig config = load_config(ocio_config);
         const MethodChoice choice = [&] {
@@ -211,8 +253,9 @@ void bind_ops(py::module_& m)
         py::arg("moments"), py::arg("table"), py::kw_only(), py::arg("tolerance"),
         py::arg("lods") = std::vector<double>{}, py::arg("candidates") = std::vector<std::string>{},
         py::arg("colormap") = "", py::arg("driver") = "", py::arg("histograms") = "", py::arg("color_pyramid") = "",
-        py::arg("ocio_config") = "", py::arg("threads") = 0,
-        "The cheapest method (naive, gaussian, color-pyramid with color_pyramid, mixture, exact) whose mean CIEDE2000 against the box reference is at "
+        py::arg("segment_pyramid") = "", py::arg("ocio_config") = "", py::arg("threads") = 0,
+        "The cheapest method (naive, gaussian, color-pyramid with color_pyramid, segments with segment_pyramid, "
+        "mixture, exact) whose mean CIEDE2000 against the box reference is at "
         "most tolerance at every LOD in lods (default 1..8), as `cmfilter apply --tolerance`: a dict with the method "
         "(None when nothing meets it), its error, and every candidate's bytes per texel, error per LOD and time.");
 

@@ -36,7 +36,8 @@ FieldFlags apply_flags()
                                {"ApplyOptions::driver_path", "--driver"},
                                {"MethodChoiceOptions::tolerance", "--tolerance"},
                                {"MethodChoiceOptions::lods", "--measure-lods"},
-                               {"MethodChoiceOptions::color_pyramid_path", "--color-pyramid P.exr"}});
+                               {"MethodChoiceOptions::color_pyramid_path", "--color-pyramid P.exr"},
+                               {"MethodChoiceOptions::segment_pyramid_path", "--segment-pyramid S.exr"}});
     return flags;
 }
 
@@ -48,7 +49,8 @@ struct ApplyArgs {
     std::string ocio_config;
     std::optional<double> tolerance;
     std::vector<double> measure_lods;
-    std::string color_pyramid;  // --tolerance's candidate color-pyramid
+    std::string color_pyramid;    // --tolerance's candidate color-pyramid
+    std::string segment_pyramid;  // --tolerance's candidate segments
     bool json = false;
     bool quiet = false;
 };
@@ -84,6 +86,7 @@ Status run(ApplyArgs args)
         co.tolerance = *args.tolerance;
         co.lods = args.measure_lods;
         co.color_pyramid_path = args.color_pyramid;
+        co.segment_pyramid_path = args.segment_pyramid;
         if (progress) co.progress = terminal_progress("apply: measuring the methods");
         auto chosen = choose_filter_method(args.options, *config, co);
         if (!chosen) return chosen.error();
@@ -94,8 +97,12 @@ Status run(ApplyArgs args)
         for (std::string& why : choice->skipped) why = name_flags(why, apply_flags());
         args.options.method = choice->choice()->method;
         if (args.options.method == FilterMethod::ColorPyramid) args.options.moments_path = args.color_pyramid;
+        if (args.options.method == FilterMethod::Segments) args.options.moments_path = args.segment_pyramid;
     } else if (!args.color_pyramid.empty()) {
         return bad_input("--color-pyramid is a candidate of --tolerance; with --method color-pyramid, name the colour "
+                         "pyramid with --moments");
+    } else if (!args.segment_pyramid.empty()) {
+        return bad_input("--segment-pyramid is a candidate of --tolerance; with --method segments, name the segment "
                          "pyramid with --moments");
     }
     auto image = apply_filter(args.options, *config);
@@ -137,6 +144,7 @@ Status run(ApplyArgs args)
         j["failed_lookups"] = r.failed_lookups;
         j["texels_outside_domain"] = r.texels_outside_domain;
         j["fraction_outside_domain"] = r.fraction_outside_domain;
+        if (r.method == FilterMethod::Segments) j["segment_fit_de"] = r.segment_fit_de;
         j["warnings"] = r.warnings;
         if (choice) j["choice"] = method_choice_json(*choice);
         j["time_ms"] = total_ms;
@@ -145,11 +153,14 @@ Status run(ApplyArgs args)
         std::cout << std::setprecision(6) << "wrote " << args.output << ": " << to_string(r.method) << ", " << r.width
                   << " x " << r.height << " at lod " << r.lod;
         if (r.lod_clamped) std::cout << " (asked " << r.lod_requested << ")";
-        std::cout << (r.method == FilterMethod::ColorPyramid ? "\n  pyramid    " : "\n  moments    ") << r.moments_path
-                  << " (" << r.moments.width << " x " << r.moments.height << ", levels 0.." << r.top_level
-                  << " reachable)\n"
+        const bool baked = r.method == FilterMethod::ColorPyramid || r.method == FilterMethod::Segments;
+        std::cout << (baked ? "\n  pyramid    " : "\n  moments    ") << r.moments_path << " (" << r.moments.width
+                  << " x " << r.moments.height << ", levels 0.." << r.top_level << " reachable)\n"
                   << "  table      " << r.table_path << "\n";
         if (!r.map_path.empty()) std::cout << "  map        " << r.map_path << "\n";
+        if (r.method == FilterMethod::Segments)
+            std::cout << "  fit        the map through the pyramid's breakpoints: CIEDE2000 " << r.segment_fit_de
+                      << " at most\n";
         if (!r.driver_path.empty()) std::cout << "  driver     " << r.driver_path << "\n";
         if (!r.histograms_path.empty()) std::cout << "  histograms " << r.histograms_path << "\n";
         if (r.method == FilterMethod::Gaussian || r.method == FilterMethod::Mixture)
@@ -174,7 +185,8 @@ Command setup_apply(CLI::App& parent)
                                           "(naive, gaussian eq. 10, exact sec. 4.1, reference)");
     app->add_option("--moments", args->options.moments_path,
                     "Moment pyramid of the driver (bake-moments); with --method color-pyramid, its colour pyramid "
-                    "(bake-moments --method color-pyramid)")
+                    "(bake-moments --method color-pyramid); with --method segments, its segment pyramid "
+                    "(bake-moments --segments)")
         ->required();
     app->add_option("--table", args->options.table_path, "Gaussian colour table (bake-colormap)")->required();
     app->add_option("--lod", args->options.lod,
@@ -186,7 +198,8 @@ Command setup_apply(CLI::App& parent)
     CLI::Option* method =
         app->add_option("--method", args->method,
                         "naive, gaussian, mixture (moments of bake-moments --order 4), exact, color-pyramid (--moments "
-                        "names a colour pyramid of the table's map) or reference")
+                        "names a colour pyramid of the table's map), segments (--moments names a segment pyramid the "
+                        "table's map fits) or reference")
             ->capture_default_str();
     app->add_option("--tolerance", args->tolerance,
                     "Choose the cheapest method whose mean CIEDE2000 against the box reference is at most DE at "
@@ -197,6 +210,9 @@ Command setup_apply(CLI::App& parent)
     app->add_option("--color-pyramid", args->color_pyramid,
                     "Colour pyramid of the same driver through the table's map (bake-moments --method "
                     "color-pyramid): --tolerance measures color-pyramid too, and reads it when chosen");
+    app->add_option("--segment-pyramid", args->segment_pyramid,
+                    "Segment pyramid of the same driver (bake-moments --segments): --tolerance measures segments "
+                    "too, and reads it when chosen");
     app->add_option("--size", args->size, "Output size WxH (default: the size of level floor(lod))");
     app->add_option("--map", args->options.map_path,
                     "Colour map image (default: the table's cmfilter:source, hash-checked)");

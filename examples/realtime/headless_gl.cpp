@@ -176,4 +176,29 @@ GLuint float_texture(GLuint unit, const std::vector<TextureLevel>& levels, int c
     return texture;
 }
 
+GLuint float_texture_array(GLuint unit, const std::vector<std::vector<TextureLevel>>& layers, GLenum wrap,
+                           GLenum min_filter, GLenum mag_filter)
+{
+    const std::vector<TextureLevel>& first = layers.front();
+    GLuint texture = 0;
+    glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &texture);
+    glTextureStorage3D(texture, static_cast<GLsizei>(first.size()), GL_RGBA32F, first[0].width, first[0].height,
+                       static_cast<GLsizei>(layers.size()));
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    for (std::size_t j = 0; j < layers.size(); ++j)
+        for (std::size_t k = 0; k < first.size(); ++k)
+            glTextureSubImage3D(texture, static_cast<GLint>(k), 0, 0, static_cast<GLint>(j), layers[j][k].width,
+                                layers[j][k].height, 1, GL_RGBA, GL_FLOAT, layers[j][k].texels);
+    glTextureParameteri(texture, GL_TEXTURE_BASE_LEVEL, 0);
+    glTextureParameteri(texture, GL_TEXTURE_MAX_LEVEL, static_cast<GLint>(first.size()) - 1);
+    glTextureParameteri(texture, GL_TEXTURE_WRAP_S, static_cast<GLint>(wrap));
+    glTextureParameteri(texture, GL_TEXTURE_WRAP_T, static_cast<GLint>(wrap));
+    glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(min_filter));
+    glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(mag_filter));
+    const float border[4] = {0, 0, 0, 0};
+    glTextureParameterfv(texture, GL_TEXTURE_BORDER_COLOR, border);
+    glBindTextureUnit(unit, texture);
+    return texture;
+}
+
 }  // namespace cmfilter_gl

@@ -66,5 +66,9 @@ struct TextureLevel {
 // to texture unit `unit`.
 GLuint float_texture(GLuint unit, const std::vector<TextureLevel>& levels, int channels, GLenum wrap_s, GLenum wrap_t,
                      GLenum min_filter, GLenum mag_filter);
+// A GL_RGBA32F GL_TEXTURE_2D_ARRAY: layers[j][k] is MIP level k of layer j
+// (four channels a texel; every layer the same sizes), bound to `unit`.
+GLuint float_texture_array(GLuint unit, const std::vector<std::vector<TextureLevel>>& layers, GLenum wrap,
+                           GLenum min_filter, GLenum mag_filter);
 
 }  // namespace cmfilter_gl

@@ -18,12 +18,18 @@
 // and a third the baked colour pyramid of the same driver through each map
 // (bake-moments --method color-pyramid) against that gaussian path:
 //   color-pyramid  ColorPyramidTexture::lookup: the colour itself
+// and a fourth the segment pyramid of the same driver for each map's
+// breakpoints (bake-moments --segments T.exr --tolerance 0.5, and exact)
+// against the same gaussian path:
+//   segments  SegmentPyramidTexture::lookup (K channels), then ramp_color
 //
 //   cmfilter-bench-apply-cost LUTS_DIR
 #include "cmfilter/colormap/color_map_loading.h"
 #include "cmfilter/tables/gaussian_color_table.h"
 #include "cmfilter/texture/color_pyramid_file.h"
 #include "cmfilter/texture/color_pyramid_texture.h"
+#include "cmfilter/texture/segment_pyramid_file.h"
+#include "cmfilter/texture/segment_pyramid_texture.h"
 #include "cmfilter/texture/moment_pyramid.h"
 #include "cmfilter/texture/moment_texture.h"
 
@@ -126,6 +132,74 @@ int through_color_pyramid(const std::string& luts, const ColorConfig& config, co
     return 0;
 }
 
+// The segment pyramid of the driver at driver_path for each map's
+// breakpoints (tolerance 0.5, then every exact breakpoint), against gaussian
+// through the moments, both through TextureSystem.
+int through_segments(const std::string& luts, const ColorConfig& config, const MomentTexture& moments,
+                     const std::string& driver_path, const std::string& dir)
+{
+    constexpr int kLookups = 1 << 18;
+    std::cout << "\nSegment pyramid against gaussian, both through TextureSystem (bilinear, LOD 0), " << kLookups
+              << " lookups per run in scanline order; fastest of " << kRuns << " alternating runs each.\n\n"
+              << "| map | breakpoints | channels | gaussian ns/pixel | segments ns/pixel | segments / gaussian |\n"
+                 "|---|---|---:|---:|---:|---:|\n";
+    for (const char* name : kMaps) {
+        ColorMapLoadOptions opt;
+        opt.path = luts + "/" + name + ".png";
+        auto map = load_color_map(opt, config);
+        if (!map) return 1;
+        auto table = GaussianColorTable::bake(map->map, {});
+        if (!table) return 1;
+        for (double tolerance : {0.5, 0.0}) {
+            SegmentPyramidBakeOptions bake;
+            bake.driver_path = driver_path;
+            bake.output_path = dir + "/" + name + "-segments.exr";
+            bake.maps = {&map->map};
+            bake.tolerance_de = tolerance;
+            auto baked = bake_segment_pyramid(bake);
+            if (!baked) {
+                std::cerr << baked.error().message << "\n";
+                return 1;
+            }
+            auto segments = SegmentPyramidTexture::open(bake.output_path);
+            if (!segments) return 1;
+            const std::vector<Rgb> colors = ramp_colors(map->map, segments->info().breakpoints);
+            std::vector<float> ramps(segments->channels());
+            const auto coordinate = [](int i, int axis) {
+                const int texel = i % (kSize * kSize);
+                return (static_cast<float>(axis == 0 ? texel % kSize : texel / kSize) + 0.5f) / kSize;
+            };
+            double sink = 0;
+            LookupCounters counters;
+            const auto [gaussian, segment] = fastest_pair_ms(
+                kRuns,
+                [&] {
+                double acc = 0;
+                for (int i = 0; i < kLookups; ++i) {
+                    const MomentSample m = moments.lookup(coordinate(i, 0), coordinate(i, 1), 0.0f);
+                    acc += table->lookup(m.mean, m.sigma, &counters).g;
+                }
+                sink += acc;
+                },
+                [&] {
+                double acc = 0;
+                for (int i = 0; i < kLookups; ++i) {
+                    segments->lookup(coordinate(i, 0), coordinate(i, 1), 0.0f, ramps.data());
+                    acc += ramp_color(colors, ramps.data()).g;
+                }
+                sink += acc;
+            });
+            char row[240];
+            std::snprintf(row, sizeof row, "| %s | %s | %d | %.1f | %.1f | %.2f |\n", name,
+                          tolerance > 0 ? "tolerance 0.5" : "exact", segments->channels(), gaussian * 1e6 / kLookups,
+                          segment * 1e6 / kLookups, segment / gaussian);
+            std::cout << row;
+            if (sink == 42.0) std::cout << "";
+        }
+    }
+    return 0;
+}
+
 // The same level as a 1024 x 1024 float driver, baked to a moment pyramid in
 // a temporary directory, looked up at LOD 0 in scanline order.
 int through_moment_texture(const std::string& luts, const ColorConfig& config, const std::vector<float>& driver)
@@ -192,6 +266,7 @@ int through_moment_texture(const std::string& luts, const ColorConfig& config, c
         if (sink == 42.0) std::cout << "";
     }
     if (int st = through_color_pyramid(luts, config, *texture, driver_path, dir.string()); st != 0) return st;
+    if (int st = through_segments(luts, config, *texture, driver_path, dir.string()); st != 0) return st;
     fs::remove_all(dir);
     return 0;
 }

@@ -49,7 +49,7 @@ foreach(size 0x4 12 4x-3 axb)
                       ABSENT ${A} COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod 0 --size ${size} -o ${A})
 endforeach()
 cmfilter_apply_case(NAME bad.unknown-method EXIT 3
-                    STDERR "unknown method 'box' \\(expected naive, gaussian, mixture, exact, color-pyramid or reference\\)"
+                    STDERR "unknown method 'box' \\(expected naive, gaussian, mixture, exact, color-pyramid, segments or reference\\)"
                     ABSENT ${A} COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod 0 --method box -o ${A})
 cmfilter_apply_case(NAME bad.exact-without-histograms EXIT 3
                     STDERR "--method exact needs --histograms H\\.exr"
@@ -58,7 +58,7 @@ cmfilter_apply_case(NAME bad.mixture-two-moments EXIT 3
                     STDERR "--method mixture needs a moment pyramid of order 4; '.*apply-moments\\.exr' holds 2 moments \\(re-bake it with bake-moments --order 4\\)"
                     ABSENT ${A} COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod 1 --method mixture -o ${A})
 cmfilter_apply_case(NAME bad.tolerance-none-meets EXIT 3
-                    STDERR "'.*apply-moments\\.exr' through '.*apply-table\\.exr': no method meets --tolerance 1e-09 \\(mean CIEDE2000 at LOD 1, 2, 3, 4, 5\\); the closest is [a-z]+ at [0-9.e-]+ \\(LOD [1-5]\\); not tried: color-pyramid: no colour pyramid of the driver through this map \\(--color-pyramid P\\.exr\\); not tried: mixture: '.*apply-moments\\.exr' holds 2 moments \\(mixture needs bake-moments --order 4\\); not tried: exact: no histogram pyramid \\(--histograms H\\.exr\\)"
+                    STDERR "'.*apply-moments\\.exr' through '.*apply-table\\.exr': no method meets --tolerance 1e-09 \\(mean CIEDE2000 at LOD 1, 2, 3, 4, 5\\); the closest is [a-z]+ at [0-9.e-]+ \\(LOD [1-5]\\); not tried: color-pyramid: no colour pyramid of the driver through this map \\(--color-pyramid P\\.exr\\); not tried: segments: no segment pyramid of the driver \\(--segment-pyramid S\\.exr\\); not tried: mixture: '.*apply-moments\\.exr' holds 2 moments \\(mixture needs bake-moments --order 4\\); not tried: exact: no histogram pyramid \\(--histograms H\\.exr\\)"
                     ABSENT ${A} COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod 1 --tolerance 1e-9 -o ${A})
 cmfilter_apply_case(NAME bad.tolerance-zero EXIT 3
                     STDERR "--tolerance 0 is invalid \\(expected a CIEDE2000 difference > 0\\)"
@@ -146,7 +146,7 @@ set_tests_properties(cli.apply.color-pyramid.bake PROPERTIES FIXTURES_SETUP appl
 # Applied, it is the reference (the box mean of C0(f) from the driver) within
 # float rounding, at an integer and a fractional LOD.
 cmfilter_apply_case(NAME color-pyramid.equals-reference EXIT 0
-                    COMMAND bash -c "set -e; for lod in 0 2 3.5; do $0 apply --moments $1 --table $2 --lod $lod --method color-pyramid -o $4/cp-$lod.exr -q; $0 apply --moments $3 --table $2 --lod $lod --method reference -o $4/ref-$lod.exr -q; oiiotool --fail 2e-6 --hardfail 2e-6 $4/cp-$lod.exr $4/ref-$lod.exr --diff > /dev/null; done"
+                    COMMAND bash -c "set -e\nfor lod in 0 2 3.5\ndo $0 apply --moments $1 --table $2 --lod $lod --method color-pyramid -o $4/cp-$lod.exr -q\n$0 apply --moments $3 --table $2 --lod $lod --method reference -o $4/ref-$lod.exr -q\noiiotool --fail 2e-6 --hardfail 2e-6 $4/cp-$lod.exr $4/ref-$lod.exr --diff > /dev/null\ndone"
                             ${CMF} ${CP} ${AT} ${AM} ${OUT})
 set_tests_properties(cli.apply.color-pyramid.equals-reference PROPERTIES
                      FIXTURES_REQUIRED "cli_dirs;cli_fixtures;apply_inputs;apply_color_pyramid")
@@ -199,3 +199,48 @@ if(MAKETX_CLI)
 else()
   message(STATUS "maketx not found: cli.apply.reference-vs-oiiotool-maketx is not registered")
 endif()
+
+# --- the segment pyramid (--method segments, bake-moments --segments) -------------
+# Baked for the breakpoints of the table's map (apply-map.exr), applied with
+# the ramp (--map ramp.png, other colours): refused unless it fits; applied
+# with the map itself it is the reference within float rounding.
+set(SP ${OUT}/apply-segments.exr)
+cmfilter_apply_case(NAME segments.bake EXIT 0
+                    STDOUT "wrote .*apply-segments\\.exr: segment pyramid, 32 x 32, 6 levels.*segments +[0-9]+ breakpoints of [0-9]+ \\(every exact breakpoint\\)"
+                    COMMAND bash -c "$0 bake-moments $1 --segments $2 -o $3 | tr '\\n' ' '"
+                            ${CMF} ${FIX}/apply-driver.exr ${AT} ${SP})
+set_tests_properties(cli.apply.segments.bake PROPERTIES FIXTURES_SETUP apply_segments)
+cmfilter_apply_case(NAME segments.equals-reference EXIT 0
+                    COMMAND bash -c "set -e\nfor lod in 0 2 3.5\ndo $0 apply --moments $1 --table $2 --lod $lod --method segments -o $4/seg-$lod.exr -q\n$0 apply --moments $3 --table $2 --lod $lod --method reference -o $4/segref-$lod.exr -q\noiiotool --fail 2e-6 --hardfail 2e-6 $4/seg-$lod.exr $4/segref-$lod.exr --diff > /dev/null\ndone"
+                            ${CMF} ${SP} ${AT} ${AM} ${OUT})
+set_tests_properties(cli.apply.segments.equals-reference PROPERTIES
+                     FIXTURES_REQUIRED "cli_dirs;cli_fixtures;apply_inputs;apply_segments")
+cmfilter_apply_case(NAME segments.info EXIT 0
+                    STDOUT "segment pyramid of a driver for the breakpoints.*breakpoints +[-0-9.e ]+"
+                    COMMAND bash -c "$0 info $1 | tr '\\n' ' '" ${CMF} ${SP})
+set_tests_properties(cli.apply.segments.info PROPERTIES
+                     FIXTURES_REQUIRED "cli_dirs;cli_fixtures;apply_inputs;apply_segments")
+cmfilter_apply_case(NAME bad.segments-other-breakpoints EXIT 3
+                    STDERR "segment pyramid '.*apply-segments\\.exr' holds [0-9]+ breakpoints in .*, and the map of table '.*apply-table\\.exr' \\('.*ramp\\.png'\\) does not fit them"
+                    ABSENT ${A} COMMAND ${CMF} apply --moments ${SP} --table ${AT} --map ${FIX}/ramp.png --lod 1
+                                        --method segments -o ${A})
+set_tests_properties(cli.apply.bad.segments-other-breakpoints PROPERTIES
+                     FIXTURES_REQUIRED "cli_dirs;cli_fixtures;apply_inputs;apply_segments")
+cmfilter_apply_case(NAME bad.segments-of-moments EXIT 3
+                    STDERR "--method segments reads a segment pyramid, and '.*apply-moments\\.exr' is another pyramid"
+                    ABSENT ${A} COMMAND ${CMF} apply --moments ${AM} --table ${AT} --lod 1 --method segments -o ${A})
+cmfilter_apply_case(NAME bad.segments-without-tables EXIT 3
+                    STDERR "--method segments bakes the breakpoints of colour maps: give their tables with --segments"
+                    ABSENT ${OUT}/sp-none.exr
+                    COMMAND ${CMF} bake-moments ${FIX}/apply-driver.exr --method segments -o ${OUT}/sp-none.exr)
+cmfilter_apply_case(NAME bad.segments-max-channels EXIT 3
+                    STDERR "the maps need more than 1 channels .* --max-channels allows 1; the closest within 1 channels reaches a mean CIEDE2000 of [0-9.e-]+"
+                    ABSENT ${OUT}/sp-none.exr
+                    COMMAND ${CMF} bake-moments ${FIX}/apply-driver.exr --segments ${AT} --max-channels 1 -o ${OUT}/sp-none.exr)
+# A two-colour map: one channel holds its share whatever the colours, so
+# --tolerance takes segments (4 bytes a texel, exact) over the colour pyramid
+# (12) and the inexact naive (4) and gaussian (8); the file says so.
+cmfilter_apply_case(NAME segments.tolerance-two-colours EXIT 0
+                    STDOUT "wrote .*apply-step-chosen\\.exr: segment pyramid.*2 breakpoints.*segments +4 B/texel, worst +[0-9.e-]+ \\(LOD [0-9]\\), .*<- chosen.*segment-pyramid.*segments chosen as the cheapest method"
+                    COMMAND bash -c "set -e\n$0 bake-colormap $1 -o $3/apply-step-table.exr -q\n$0 bake-moments $2 --tolerance 0.05 --table $3/apply-step-table.exr -o $3/apply-step-chosen.exr | tr '\\n' ' '\n$0 info $3/apply-step-chosen.exr | tr '\\n' ' '"
+                            ${CMF} ${LUTS}/step.png ${FIX}/apply-driver.exr ${OUT})

@@ -3,7 +3,8 @@
 # Checks `cmfilter apply --method reference` (the box mean of C0(f) over each
 # footprint) and the baked colour pyramid (`bake-moments --method
 # color-pyramid`, every MIP level of its file, and `apply --method
-# color-pyramid`) against OpenImageIO's own tools: `oiiotool --colormap` maps the
+# color-pyramid`) and the segment pyramid (`bake-moments --segments`, `apply
+# --method segments`) against OpenImageIO's own tools: `oiiotool --colormap` maps the
 # driver through the same piecewise-linear map, `maketx --filter box` box-mips
 # the result, and each level is compared with apply at that integer LOD; a
 # fractional LOD is compared with the two levels blended (oiiotool
@@ -38,12 +39,16 @@ for k in 0 1 2 3 4 5; do
   "$oiiotool" "$out/mapped.tx" --selectmip $k -o "$out/maketx-$k.exr"
 done
 "$cmf" bake-moments "$fix/apply-driver.exr" --method color-pyramid --table "$out/table.exr" -o "$out/colors.exr" -q
+"$cmf" bake-moments "$fix/apply-driver.exr" --segments "$out/table.exr" -o "$out/segments.exr" -q
 for k in 0 1 2 3 4 5; do
   "$oiiotool" "$out/colors.exr" --selectmip $k -o "$out/colors-$k.exr"
   diff_images "$out/colors-$k.exr" "$out/maketx-$k.exr" || { echo "FAIL: colour pyramid level $k"; fail=1; }
   "$cmf" apply --moments "$out/colors.exr" --table "$out/table.exr" --lod $k \
       --method color-pyramid -o "$out/color-pyramid-$k.exr" -q 2> /dev/null
   diff_images "$out/color-pyramid-$k.exr" "$out/maketx-$k.exr" || { echo "FAIL: apply color-pyramid at lod $k"; fail=1; }
+  "$cmf" apply --moments "$out/segments.exr" --table "$out/table.exr" --lod $k \
+      --method segments -o "$out/segments-$k.exr" -q 2> /dev/null
+  diff_images "$out/segments-$k.exr" "$out/maketx-$k.exr" || { echo "FAIL: apply segments at lod $k"; fail=1; }
 done
 for k in 0 1 2 3 4 5; do
   "$cmf" apply --moments "$out/moments.exr" --table "$out/table.exr" --lod $k \

@@ -32,6 +32,10 @@ cmfilter_json_case(bake-moments-color-pyramid apply_inputs ${CMF} bake-moments $
                    -o ${JOUT}/color-pyramid.exr --method color-pyramid --table ${OUT}/apply-table.exr -d half)
 cmfilter_json_case(bake-moments-tolerance-color-pyramid apply_inputs ${CMF} bake-moments ${FIX}/apply-driver.exr
                    -o ${JOUT}/tolerance-cp.exr --tolerance 0.05 --table ${OUT}/apply-table.exr --measure-lods 1,2)
+cmfilter_json_case(bake-moments-segments apply_inputs ${CMF} bake-moments ${FIX}/apply-driver.exr
+                   -o ${JOUT}/segments.exr --segments ${OUT}/apply-table.exr --tolerance 0.5)
+cmfilter_json_case(apply-segments "apply_inputs;apply_segments" ${CMF} apply --moments ${OUT}/apply-segments.exr
+                   --table ${OUT}/apply-table.exr --lod 1 --method segments -o ${JOUT}/segments-applied.exr)
 cmfilter_json_case(bake-noise "" ${CMF} bake-noise --noise gradient:seed=3 --lod-step 1 --max-footprints 4096
                    -o ${JOUT}/sigma.exr --csv ${JOUT}/sigma.csv)
 cmfilter_json_case(noise-image "" ${CMF} noise-image --noise fbm --size 32x16 -o ${JOUT}/noise.exr)

@@ -112,7 +112,7 @@ set_tests_properties(cli.render.bad.exact-too-many-values PROPERTIES FIXTURES_RE
 # level 0; on the four-valued driver the histograms' exact colours, a second
 # computation of the same box means (float rounding apart). A noise is refused.
 cmfilter_cli_case(NAME render.texture-color-pyramid-equals-exact EXIT 0
-                  COMMAND bash -c "set -e; $0 render $1 --method color-pyramid -o $2/render-cp.exr -q; $0 render $1 --method exact -o $2/render-cp-exact.exr -q; oiiotool --fail 1e-4 --hardfail 1e-4 $2/render-cp.exr $2/render-cp-exact.exr --diff > /dev/null"
+                  COMMAND bash -c "set -e\n$0 render $1 --method color-pyramid -o $2/render-cp.exr -q\n$0 render $1 --method exact -o $2/render-cp-exact.exr -q\noiiotool --fail 1e-4 --hardfail 1e-4 $2/render-cp.exr $2/render-cp-exact.exr --diff > /dev/null"
                           ${CMF} ${SCB}/texture-quantised.json ${OUT})
 cmfilter_cli_case(NAME render.bad.color-pyramid-noise EXIT 3
                   STDERR "surface 0: color-pyramid needs a texture driver"

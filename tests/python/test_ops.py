@@ -9,7 +9,7 @@ import skimage.color
 import tifffile
 
 import cmfilter
-from conftest import c0, linear_colormap, write_png8
+from conftest import c0, linear_colormap, read_png, write_png8
 from test_tables import quadrature_T
 
 
@@ -81,6 +81,36 @@ def test_color_pyramid_is_numpys_box_mean_of_c0_and_refuses_another_map(baked, l
     choice = cmfilter.choose_method(moments, table, tolerance=1e-3, lods=[1, 2], color_pyramid=pyramid)
     assert choice["method"] == "color-pyramid"
     assert [t["method"] for t in choice["trials"]][:3] == ["naive", "gaussian", "color-pyramid"]
+
+
+def test_segment_pyramid_recoloured_is_numpys_box_mean_of_the_new_map(baked, luts, tmp_path):
+    # The step map's breakpoints, baked once; applied with the step's texels
+    # permuted B, R, G (other colours, the same breakpoints): NumPy's box
+    # mean of that map's C0(f). Stripes break elsewhere: refused.
+    f, moments, _ = baked
+    step = cmfilter.ColorTable.bake(cmfilter.ColorMap.load(str(luts / "step.png")), values=256, sigmas=64)
+    step.write(str(tmp_path / "step.exr"))
+    pyramid = str(tmp_path / "segments.exr")
+    info = cmfilter.bake_segment_pyramid(str(tmp_path / "driver.png"), pyramid, tables=[str(tmp_path / "step.exr")])
+    assert info["channels"] == len(info["breakpoints"]) - 1 and info["fit_de"] < 1e-9
+    codes = read_png(luts / "step.png")[:, :, [2, 0, 1]]
+    write_png8(tmp_path / "recoloured.png", codes)
+    recoloured = cmfilter.ColorTable.bake(cmfilter.ColorMap.load(str(tmp_path / "recoloured.png")), values=256,
+                                          sigmas=64)
+    recoloured.write(str(tmp_path / "recoloured.exr"))
+    texels = linear_colormap(tmp_path / "recoloured.png")
+    for lod, n in ((0, 16), (1, 8), (2, 4)):
+        got = cmfilter.apply(pyramid, str(tmp_path / "recoloured.exr"), lod=lod, method="segments")
+        b = 16 // n
+        want = c0(texels, 0, 1, f).reshape(n, b, n, b, 3).mean(axis=(1, 3))
+        np.testing.assert_allclose(got, want, atol=1e-5)
+    other = cmfilter.ColorTable.bake(cmfilter.ColorMap.load(str(luts / "stripes.png")), values=64, sigmas=16)
+    other.write(str(tmp_path / "stripes.exr"))
+    with pytest.raises(cmfilter.Error, match="does not fit them"):
+        cmfilter.apply(pyramid, str(tmp_path / "stripes.exr"), lod=1, method="segments")
+    choice = cmfilter.choose_method(moments, str(tmp_path / "step.exr"), tolerance=1e-3, lods=[1, 2],
+                                    segment_pyramid=pyramid)
+    assert choice["method"] == "segments"
 
 
 def test_apply_clamped_lod_warns(baked):

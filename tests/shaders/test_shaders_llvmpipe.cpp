@@ -33,6 +33,9 @@
 #include "cmfilter/tables/gaussian_color_table_file.h"
 #include "cmfilter/texture/color_pyramid_file.h"
 #include "cmfilter/texture/color_pyramid_texture.h"
+#include "cmfilter/colormap/map_breakpoints.h"
+#include "cmfilter/texture/segment_pyramid_file.h"
+#include "cmfilter/texture/segment_pyramid_texture.h"
 #include "cmfilter/texture/moment_pyramid.h"
 #include "cmfilter/texture/moment_texture.h"
 #include "cmfilter/util/temporary_file.h"
@@ -433,6 +436,115 @@ TEST_CASE("color_pyramid: the colour pyramid's filtered colour at a level of det
     check_color_pyramid(TextureWrap::Clamp);
     check_color_pyramid(TextureWrap::Periodic);
     check_color_pyramid(TextureWrap::Black);
+}
+
+// ---------------------------------------------------------------------------
+// Segment pyramids (bake-moments --segments), recoloured in the shader.
+
+namespace {
+
+void check_segments(TextureWrap wrap)
+{
+    auto driver = TemporaryFile::create("shader-driver", ".exr");
+    auto pyramid = TemporaryFile::create("shader-segments", ".exr");
+    REQUIRE(driver);
+    REQUIRE(pyramid);
+    // Baked for a hard-edged periodic map over the driver's values (about
+    // 98.7 to 101.3): a breakpoint at every knot and at both ends, more than
+    // four channels (two layers at least); applied with other colours on the
+    // same breakpoints.
+    ColorMap baked_map;
+    baked_map.vmin = 99;
+    baked_map.vmax = 101;
+    baked_map.texels = {{0.02, 0.05, 0.4}, {0.9, 0.1, 0.05}, {0.1, 0.8, 0.2}, {2.5, 2.2, 0.3}, {0.0, 0.0, 0.0}};
+    baked_map.wrap = WrapMode::Repeat;
+    ColorMap recoloured = baked_map;
+    for (Rgb& c : recoloured.texels) c = {c.b + 0.1, 0.5 * c.r, c.g * c.g};
+    SegmentPyramidBakeOptions bake;
+    bake.driver_path = write_driver(*driver);
+    bake.output_path = pyramid->path();
+    bake.wrap = wrap;
+    bake.maps = {&baked_map};
+    bake.threads = 1;
+    REQUIRE(bake_segment_pyramid(bake));
+    auto texture = SegmentPyramidTexture::open(pyramid->path());
+    REQUIRE(texture);
+    const SegmentPyramidInfo& info = texture->info();
+    const int K = info.channels();
+    REQUIRE(K > 4);
+    REQUIRE(K <= 16);
+    REQUIRE(check_segment_pyramid_map(info, pyramid->path(), recoloured, "the recoloured map"));
+    // The levels as a renderer uploads them: four channels a layer.
+    const MomentLevels levels = read_pyramid_levels(pyramid->path(), K);
+    const int layer_count = (K + 3) / 4;
+    std::vector<std::vector<std::vector<float>>> layer_texels(layer_count);
+    std::vector<std::vector<TextureLevel>> layers(layer_count);
+    for (int j = 0; j < layer_count; ++j)
+        for (std::size_t k = 0; k < levels.levels.size(); ++k) {
+            const TextureLevel& l = levels.levels[k];
+            const std::size_t n = static_cast<std::size_t>(l.width) * l.height;
+            std::vector<float> t(n * 4, 0.0f);
+            for (std::size_t p = 0; p < n; ++p)
+                for (int c = 0; c < 4 && 4 * j + c < K; ++c) t[4 * p + c] = levels.texels[k][p * K + 4 * j + c];
+            layer_texels[j].push_back(std::move(t));
+        }
+    for (int j = 0; j < layer_count; ++j)
+        for (std::size_t k = 0; k < levels.levels.size(); ++k)
+            layers[j].push_back({levels.levels[k].width, levels.levels[k].height, layer_texels[j][k].data()});
+    const GLenum gl_wrap = wrap == TextureWrap::Periodic ? GL_REPEAT
+                           : wrap == TextureWrap::Black  ? GL_CLAMP_TO_BORDER
+                                                         : GL_CLAMP_TO_EDGE;
+    const GLuint program = kernel("cmfilter_segments");
+    const GLuint tex = float_texture_array(0, layers, gl_wrap, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR);
+
+    const double size = info.width;
+    const std::vector<float> points = pyramid_points(17, info.levels, size);
+    const std::size_t count = points.size() / 4;
+    struct {
+        std::int32_t levels, channels, count, unused;
+        float colors[17][4];
+    } parameters{info.levels, K, static_cast<std::int32_t>(count), 0, {}};
+    for (int k = 0; k <= K; ++k) {
+        const Rgb c = recoloured.evaluate(info.breakpoints[k]);
+        parameters.colors[k][0] = static_cast<float>(c.r);
+        parameters.colors[k][1] = static_cast<float>(c.g);
+        parameters.colors[k][2] = static_cast<float>(c.b);
+    }
+    const std::vector<float> result = run_kernel(program, points, count, count * 8, &parameters, sizeof parameters);
+
+    const std::vector<Rgb> steps = ramp_colors(recoloured, info.breakpoints);
+    std::vector<float> ramps(K);
+    Tally colour, grad;
+    for (std::size_t k = 0; k < count; ++k) {
+        const float* p = &points[4 * k];
+        const std::string where = point_name(p, 4);
+        texture->lookup(p[0], p[1], p[2], ramps.data());
+        const Rgb c = ramp_color(steps, ramps.data());
+        texture->lookup(p[0], p[1], static_cast<float>(std::log2(p[3] * size)), ramps.data());
+        const Rgb g = ramp_color(steps, ramps.data());
+        for (int ch = 0; ch < 3; ++ch) {
+            colour.add(result[8 * k + ch], c[ch], where);
+            grad.add(result[8 * k + 4 + ch], g[ch], where);
+        }
+    }
+    glDeleteTextures(1, &tex);
+    glDeleteProgram(program);
+    MESSAGE("segments, wrap " << std::string(to_string(wrap)) << ", " << K << " channels, " << count
+                              << " points: colour " << colour.max_error << "; textureGrad " << grad.max_error);
+    // Against OpenImageIO's TextureSystem and ramp_color: float32 rounding
+    // of the ramp means times steps up to 2.5, while a level off by one or a
+    // channel in the wrong layer differs by 1e-2 and more.
+    CHECK_MESSAGE(colour.max_error <= 1e-4, colour.where);
+    CHECK_MESSAGE(grad.max_error <= 1e-4, grad.where);
+}
+
+}  // namespace
+
+TEST_CASE("segments: the segment pyramid recoloured in the shader at a level of detail, clamp, periodic, black")
+{
+    check_segments(TextureWrap::Clamp);
+    check_segments(TextureWrap::Periodic);
+    check_segments(TextureWrap::Black);
 }
 
 // ---------------------------------------------------------------------------

@@ -6,6 +6,7 @@
 #include "cmfilter/ops/filtered_image_file.h"
 #include "cmfilter/tables/gaussian_color_table_file.h"
 #include "cmfilter/texture/color_pyramid_file.h"
+#include "cmfilter/texture/segment_pyramid_file.h"
 #include "cmfilter/texture/histogram_pyramid.h"
 #include "cmfilter/io/image_reading.h"
 #include "cmfilter/texture/moment_pyramid_info.h"
@@ -47,6 +48,13 @@ std::string describe_kind(const std::string& kind, int width, int height)
                " level 0, tiled MIP-map; channels R, G, B = box mean of C0(f) over each texel's footprint, "
                "scene-linear (cmfilter:linear_space), exact for a box filter; for the map whose digest is "
                "cmfilter:map_sha256 only";
+    if (kind == kSegmentPyramidKind)
+        return "segment pyramid of a driver for the breakpoints t_0..t_K of colour maps (apply --method segments): " +
+               std::to_string(width) + " x " + std::to_string(height) +
+               " level 0, tiled MIP-map; channel k = box mean R_k of the ramp clamp((f - t_{k-1}) / (t_k - "
+               "t_{k-1}), 0, 1) (cmfilter:breakpoints); mean C(f) = C(t_0) + sum_k (C(t_k) - C(t_{k-1})) R_k for "
+               "any map linear between them, within cmfilter:segment_tolerance (CIEDE2000) of the maps it was "
+               "baked for";
     if (kind == kFilteredImageKind)
         return "filtered colour image of a colour-mapped driver (cmfilter apply): " + std::to_string(width) + " x " +
                std::to_string(height) + " RGB";

@@ -4,6 +4,8 @@
 #include "cmfilter/texture/box_pyramid.h"
 #include "cmfilter/texture/color_pyramid.h"
 #include "cmfilter/texture/color_pyramid_texture.h"
+#include "cmfilter/colormap/map_breakpoints.h"
+#include "cmfilter/texture/segment_pyramid_texture.h"
 #include "cmfilter/io/driver_image.h"
 #include "cmfilter/tables/gaussian_color_table_file.h"
 #include "cmfilter/texture/histogram_pyramid.h"
@@ -133,6 +135,38 @@ FilteredImage image_of(const ApplyOptions& options, const ColorConfig& config)
     return out;
 }
 
+// What the image records of the driver of a baked colour or segment
+// pyramid, as a moment pyramid's info.
+template <class Info>
+void record_driver(MomentPyramidInfo& moments, const Info& info)
+{
+    moments.width = info.width;
+    moments.height = info.height;
+    moments.levels = info.levels;
+    moments.wrap = info.wrap;
+    moments.channel = info.channel;
+    moments.channel_index = info.channel_index;
+    moments.driver_min = info.driver_min;
+    moments.driver_max = info.driver_max;
+    moments.source = info.source;
+    moments.source_sha256 = info.source_sha256;
+}
+
+// The colour map of a table (TableColorMapOptions), its path and warnings
+// recorded in `out`.
+Expected<TableColorMap> table_map(const ApplyOptions& options, const LoadedGaussianColorTable& table,
+                                  const ColorConfig& config, FilteredImage& out)
+{
+    TableColorMapOptions mo;
+    mo.table_path = options.table_path;
+    mo.map_override = options.map_path;
+    auto map = load_table_color_map(table, mo, config);
+    if (!map) return map.error();
+    out.map_path = map->map.provenance.path;
+    out.warnings.insert(out.warnings.end(), map->warnings.begin(), map->warnings.end());
+    return map;
+}
+
 // color-pyramid: the baked box means of C0(f), one RGB lookup a pixel,
 // through the map of the table (checked against the pyramid's digest).
 Expected<FilteredImage> apply_color_pyramid(const ApplyOptions& options, const ColorConfig& config)
@@ -154,34 +188,59 @@ Expected<FilteredImage> apply_color_pyramid(const ApplyOptions& options, const C
                          "' (expected the same: re-bake it under this config)");
     auto table = read_gaussian_color_table(options.table_path);
     if (!table) return table.error();
-    TableColorMapOptions mo;
-    mo.table_path = options.table_path;
-    mo.map_override = options.map_path;
-    auto map = load_table_color_map(*table, mo, config);
+    auto map = table_map(options, *table, config, out);
     if (!map) return map.error();
-    out.map_path = map->map.provenance.path;
-    out.warnings.insert(out.warnings.end(), map->warnings.begin(), map->warnings.end());
     if (auto st = check_color_pyramid_map(info, options.moments_path, map->map.map,
                                           "the map of table '" + options.table_path + "' ('" + out.map_path + "')");
         !st)
         return st.error();
-    // What the image records of its driver, as a moment pyramid's info.
-    out.moments.width = info.width;
-    out.moments.height = info.height;
-    out.moments.levels = info.levels;
-    out.moments.wrap = info.wrap;
-    out.moments.channel = info.channel;
-    out.moments.channel_index = info.channel_index;
-    out.moments.driver_min = info.driver_min;
-    out.moments.driver_max = info.driver_max;
-    out.moments.source = info.source;
-    out.moments.source_sha256 = info.source_sha256;
+    record_driver(out.moments, info);
     set_output_lod(out, options, pyramid->reachable_levels() - 1, info.width, info.height);
     std::vector<std::size_t> failed(out.height, 0);
     shade_pixels(out, options, [&](float s, float t, float lod, int y) {
         const ColorPyramidSample c = pyramid->lookup(s, t, lod);  // mean C0(f) over the footprint
         if (!c.ok) ++failed[y];
         return c.color;
+    });
+    for (std::size_t n : failed) out.failed_lookups += n;
+    if (out.failed_lookups > 0)
+        out.warnings.push_back(std::to_string(out.failed_lookups) + " texture lookups failed and were read as black");
+    return out;
+}
+
+// segments: the ramp means of the footprint (K lookups of one texture) and
+// the table's map at the pyramid's breakpoints, which it must fit:
+// mean C = C(t_0) + sum_k (C(t_k) - C(t_{k-1})) R_k (map_breakpoints.h).
+Expected<FilteredImage> apply_segments(const ApplyOptions& options, const ColorConfig& config)
+{
+    FilteredImage out = image_of(options, config);
+    auto pyramid = SegmentPyramidTexture::open(options.moments_path);
+    if (!pyramid) {
+        if (MomentTexture::open(options.moments_path) || ColorPyramidTexture::open(options.moments_path))
+            return bad_input("ApplyOptions::method segments reads a segment pyramid, and '" + options.moments_path +
+                                 "' is another pyramid (bake one with bake-moments DRIVER --segments T.exr)",
+                             "ApplyOptions::moments_path");
+        return pyramid.error();
+    }
+    const SegmentPyramidInfo& info = pyramid->info();
+    auto table = read_gaussian_color_table(options.table_path);
+    if (!table) return table.error();
+    auto map = table_map(options, *table, config, out);
+    if (!map) return map.error();
+    auto fit = check_segment_pyramid_map(info, options.moments_path, map->map.map,
+                                         "the map of table '" + options.table_path + "' ('" + out.map_path + "')");
+    if (!fit) return fit.error();
+    out.segment_fit_de = fit->max_de;
+    const std::vector<Rgb> colors = ramp_colors(map->map.map, info.breakpoints);
+    record_driver(out.moments, info);
+    set_output_lod(out, options, pyramid->reachable_levels() - 1, info.width, info.height);
+    const int H = out.height;
+    std::vector<std::size_t> failed(H, 0);
+    std::vector<std::vector<float>> row_ramps(H, std::vector<float>(pyramid->channels()));
+    shade_pixels(out, options, [&](float s, float t, float lod, int y) {
+        float* ramps = row_ramps[y].data();
+        if (!pyramid->lookup(s, t, lod, ramps)) ++failed[y];
+        return ramp_color(colors, ramps);
     });
     for (std::size_t n : failed) out.failed_lookups += n;
     if (out.failed_lookups > 0)
@@ -200,6 +259,7 @@ const char* to_string(FilterMethod method)
     case FilterMethod::Reference: return "reference";
     case FilterMethod::Mixture: return "mixture";
     case FilterMethod::ColorPyramid: return "color-pyramid";
+    case FilterMethod::Segments: return "segments";
     }
     return "?";
 }
@@ -207,10 +267,10 @@ const char* to_string(FilterMethod method)
 Expected<FilterMethod> parse_filter_method(const std::string& name)
 {
     for (FilterMethod m : {FilterMethod::Naive, FilterMethod::Gaussian, FilterMethod::Exact, FilterMethod::Reference,
-                           FilterMethod::Mixture, FilterMethod::ColorPyramid})
+                           FilterMethod::Mixture, FilterMethod::ColorPyramid, FilterMethod::Segments})
         if (name == to_string(m)) return m;
     return bad_input("unknown method '" + name +
-                     "' (expected naive, gaussian, mixture, exact, color-pyramid or reference)");
+                     "' (expected naive, gaussian, mixture, exact, color-pyramid, segments or reference)");
 }
 
 Expected<FilteredImage> apply_filter(const ApplyOptions& options, const ColorConfig& config)
@@ -227,6 +287,7 @@ Expected<FilteredImage> apply_filter(const ApplyOptions& options, const ColorCon
                          "ApplyOptions::histograms_path");
 
     if (options.method == FilterMethod::ColorPyramid) return apply_color_pyramid(options, config);
+    if (options.method == FilterMethod::Segments) return apply_segments(options, config);
 
     FilteredImage out = image_of(options, config);
 

@@ -17,6 +17,9 @@
 //   color-pyramid  the same box mean baked for one map (color_pyramid_file.h):
 //              ApplyOptions::moments_path names the colour pyramid, and the
 //              table's map must be the one it was baked through
+//   segments   the same box mean for any map on baked breakpoints
+//              (segment_pyramid_file.h): ApplyOptions::moments_path names the
+//              segment pyramid, and the table's map must fit its breakpoints
 // Every method reads its footprint with the same (s, t, lod) conventions as
 // MomentTexture::lookup, so the methods compare like with like.
 #pragma once
@@ -34,14 +37,14 @@
 
 namespace cmfilter {
 
-enum class FilterMethod { Naive, Gaussian, Exact, Reference, Mixture, ColorPyramid };
+enum class FilterMethod { Naive, Gaussian, Exact, Reference, Mixture, ColorPyramid, Segments };
 
-// "naive", "gaussian", "exact", "reference", "mixture", "color-pyramid".
+// "naive", "gaussian", "exact", "reference", "mixture", "color-pyramid", "segments".
 const char* to_string(FilterMethod method);
 Expected<FilterMethod> parse_filter_method(const std::string& name);
 
 struct ApplyOptions {
-    std::string moments_path;  // moment pyramid (bake-moments); color-pyramid: the colour pyramid
+    std::string moments_path;  // moment pyramid (bake-moments); color-pyramid, segments: that pyramid
     std::string table_path;    // Gaussian colour table (bake-colormap)
     double lod = 0;            // clamped to [0, top reachable level], with a warning
     FilterMethod method = FilterMethod::Gaussian;
@@ -68,6 +71,9 @@ struct FilteredImage {
     std::string map_path;         // the colour map file used (naive, exact, reference)
     std::string driver_path;      // the driver read (reference)
     std::string histograms_path;  // exact
+    // segments: the largest CIEDE2000 of the table's map against its
+    // interpolant through the pyramid's breakpoints (0 when it fits exactly).
+    double segment_fit_de = 0;
 
     // gaussian: table lookups outside its range (LookupCounters).
     LookupCounters table_counters;

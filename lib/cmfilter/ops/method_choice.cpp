@@ -3,6 +3,7 @@
 
 #include "cmfilter/ops/image_comparison.h"
 #include "cmfilter/texture/color_pyramid_texture.h"
+#include "cmfilter/texture/segment_pyramid_texture.h"
 #include "cmfilter/texture/histogram_pyramid.h"
 #include "cmfilter/texture/moment_texture.h"
 #include "cmfilter/util/stopwatch.h"
@@ -24,11 +25,12 @@ int method_rank(FilterMethod m)
     case FilterMethod::Naive: return 0;
     case FilterMethod::Gaussian: return 1;
     case FilterMethod::ColorPyramid: return 2;
-    case FilterMethod::Mixture: return 3;
-    case FilterMethod::Exact: return 4;
-    case FilterMethod::Reference: return 5;
+    case FilterMethod::Segments: return 3;
+    case FilterMethod::Mixture: return 4;
+    case FilterMethod::Exact: return 5;
+    case FilterMethod::Reference: return 6;
     }
-    return 6;
+    return 7;
 }
 
 std::string short_number(double v)
@@ -101,8 +103,8 @@ Expected<MethodChoice> choose_filter_method(const ApplyOptions& base, const Colo
     // The candidates, each with what a renderer stores per texel for it.
     std::vector<FilterMethod> wanted = options.candidates;
     if (wanted.empty())
-        wanted = {FilterMethod::Naive, FilterMethod::Gaussian, FilterMethod::ColorPyramid, FilterMethod::Mixture,
-                  FilterMethod::Exact};
+        wanted = {FilterMethod::Naive,    FilterMethod::Gaussian, FilterMethod::ColorPyramid,
+                  FilterMethod::Segments, FilterMethod::Mixture,  FilterMethod::Exact};
     const bool asked = !options.candidates.empty();
     std::size_t bins = 0;
     if (!base.histograms_path.empty()) {
@@ -121,6 +123,18 @@ Expected<MethodChoice> choose_filter_method(const ApplyOptions& base, const Colo
                                  std::to_string(moments->info().height) + " (expected the same driver)",
                              "MethodChoiceOptions::color_pyramid_path");
         color_pyramid = p->info();
+    }
+    std::optional<SegmentPyramidInfo> segment_pyramid;
+    if (!options.segment_pyramid_path.empty()) {
+        auto p = SegmentPyramidTexture::open(options.segment_pyramid_path);
+        if (!p) return p.error();
+        if (p->info().width != moments->info().width || p->info().height != moments->info().height)
+            return bad_input("segment pyramid '" + options.segment_pyramid_path + "' is " +
+                                 std::to_string(p->info().width) + " x " + std::to_string(p->info().height) + " but '" +
+                                 base.moments_path + "' is " + std::to_string(moments->info().width) + " x " +
+                                 std::to_string(moments->info().height) + " (expected the same driver)",
+                             "MethodChoiceOptions::segment_pyramid_path");
+        segment_pyramid = p->info();
     }
     for (FilterMethod m : wanted) {
         if (std::any_of(out.trials.begin(), out.trials.end(), [m](const MethodTrial& t) { return t.method == m; }))
@@ -154,6 +168,16 @@ Expected<MethodChoice> choose_filter_method(const ApplyOptions& base, const Colo
             }
             t.bytes_per_texel = color_pyramid->bytes_per_texel();
             break;
+        case FilterMethod::Segments:
+            if (!segment_pyramid) {
+                const std::string why = "segments: no segment pyramid of the driver "
+                                        "(MethodChoiceOptions::segment_pyramid_path)";
+                if (asked) return bad_input(why, "MethodChoiceOptions::segment_pyramid_path");
+                out.skipped.push_back(why);
+                continue;
+            }
+            t.bytes_per_texel = segment_pyramid->bytes_per_texel();
+            break;
         case FilterMethod::Exact:
             if (bins == 0) {
                 const std::string why = "exact: no histogram pyramid (ApplyOptions::histograms_path)";
@@ -184,7 +208,9 @@ Expected<MethodChoice> choose_filter_method(const ApplyOptions& base, const Colo
         out.reference_ms += reference_time.elapsed_ms();
         for (MethodTrial& t : out.trials) {
             run.method = t.method;
-            run.moments_path = t.method == FilterMethod::ColorPyramid ? options.color_pyramid_path : base.moments_path;
+            run.moments_path = t.method == FilterMethod::ColorPyramid ? options.color_pyramid_path
+                               : t.method == FilterMethod::Segments   ? options.segment_pyramid_path
+                                                                      : base.moments_path;
             const Stopwatch time;
             auto image = apply_filter(run, config);
             if (!image) return image.error();

@@ -13,6 +13,9 @@
 //   color-pyramid  the box means of C0(f) baked for this map (12 bytes in
 //             float32, 6 in half, color_pyramid_file.h), one RGB lookup and
 //             no table; exact up to its storage, but tied to the map
+//   segments  the ramp means of the map's breakpoints (4 K bytes in float32,
+//             2 K in half, for K + 1 breakpoints, segment_pyramid_file.h), K
+//             channels and no table; any map on those breakpoints
 //   mixture   four moments (16 bytes, bake-moments --order 4), two lookups
 //   exact     the histogram pyramid, one float32 weight per distinct value
 //             (4 B bytes for B values) and no table
@@ -39,7 +42,8 @@ struct MethodChoiceOptions {
     // Each finite and >= 0; LODs above the top level are dropped.
     std::vector<double> lods;
     // The methods tried; empty: every one the inputs allow (naive,
-    // gaussian, color-pyramid with color_pyramid_path, mixture when the
+    // gaussian, color-pyramid with color_pyramid_path, segments with
+    // segment_pyramid_path, mixture when the
     // moments are of order 4, exact when ApplyOptions::histograms_path is
     // set). Reference is not a candidate.
     std::vector<FilterMethod> candidates;
@@ -47,6 +51,9 @@ struct MethodChoiceOptions {
     // (color_pyramid_file.h): the candidate color-pyramid, measured as
     // apply reads it; empty: not a candidate (said in MethodChoice::skipped).
     std::string color_pyramid_path;
+    // A segment pyramid of the same driver whose breakpoints the table's map
+    // fits (segment_pyramid_file.h): the candidate segments; empty: not one.
+    std::string segment_pyramid_path;
     // Optional: the fraction of the LODs measured, from the calling thread.
     std::function<void(double fraction)> progress;
 };

@@ -119,15 +119,16 @@ TEST_CASE("method choice: a two-valued driver needs the mixture or the histogram
     const ApplyOptions in = apply_inputs(kDir, "two", f, kSize, kSize, {}, 4);
     {
         const MethodChoice c = choose(in, 0.5);
-        // No histograms and no colour pyramid: exact and color-pyramid are
-        // skipped, and say why.
+        // No histograms, colour or segment pyramid: exact, color-pyramid and
+        // segments are skipped, and say why.
         REQUIRE(c.trials.size() == 3);
         CHECK(c.trials[0].method == FilterMethod::Naive);
         CHECK(c.trials[1].method == FilterMethod::Gaussian);
         CHECK(c.trials[2].method == FilterMethod::Mixture);
-        REQUIRE(c.skipped.size() == 2);
+        REQUIRE(c.skipped.size() == 3);
         CHECK(c.skipped[0].find("MethodChoiceOptions::color_pyramid_path") != std::string::npos);
-        CHECK(c.skipped[1].find("ApplyOptions::histograms_path") != std::string::npos);
+        CHECK(c.skipped[1].find("MethodChoiceOptions::segment_pyramid_path") != std::string::npos);
+        CHECK(c.skipped[2].find("ApplyOptions::histograms_path") != std::string::npos);
         // Two values: the mixture's two components are the two values
         // (math/moment_mixture.h), so only the table's interpolation is left;
         // one Gaussian spreads the mass between them.
