@@ -151,6 +151,27 @@ std::vector<float> run_kernel(GLuint program, const std::vector<float>& points, 
     return result;
 }
 
+namespace {
+
+// The MIP range (levels 0 .. levels - 1), wrap, filters and a black border
+// of a texture whose levels are uploaded, bound to `unit`.
+GLuint sampled_texture(GLuint texture, GLuint unit, std::size_t levels, GLenum wrap_s, GLenum wrap_t, GLenum min_filter,
+                       GLenum mag_filter)
+{
+    glTextureParameteri(texture, GL_TEXTURE_BASE_LEVEL, 0);
+    glTextureParameteri(texture, GL_TEXTURE_MAX_LEVEL, static_cast<GLint>(levels) - 1);
+    glTextureParameteri(texture, GL_TEXTURE_WRAP_S, static_cast<GLint>(wrap_s));
+    glTextureParameteri(texture, GL_TEXTURE_WRAP_T, static_cast<GLint>(wrap_t));
+    glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(min_filter));
+    glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(mag_filter));
+    const float border[4] = {0, 0, 0, 0};
+    glTextureParameterfv(texture, GL_TEXTURE_BORDER_COLOR, border);
+    glBindTextureUnit(unit, texture);
+    return texture;
+}
+
+}  // namespace
+
 GLuint float_texture(GLuint unit, const std::vector<TextureLevel>& levels, int channels, GLenum wrap_s, GLenum wrap_t,
                      GLenum min_filter, GLenum mag_filter)
 {
@@ -164,16 +185,7 @@ GLuint float_texture(GLuint unit, const std::vector<TextureLevel>& levels, int c
     for (std::size_t k = 0; k < levels.size(); ++k)
         glTextureSubImage2D(texture, static_cast<GLint>(k), 0, 0, levels[k].width, levels[k].height,
                             format[channels - 1], GL_FLOAT, levels[k].texels);
-    glTextureParameteri(texture, GL_TEXTURE_BASE_LEVEL, 0);
-    glTextureParameteri(texture, GL_TEXTURE_MAX_LEVEL, static_cast<GLint>(levels.size()) - 1);
-    glTextureParameteri(texture, GL_TEXTURE_WRAP_S, static_cast<GLint>(wrap_s));
-    glTextureParameteri(texture, GL_TEXTURE_WRAP_T, static_cast<GLint>(wrap_t));
-    glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(min_filter));
-    glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(mag_filter));
-    const float border[4] = {0, 0, 0, 0};
-    glTextureParameterfv(texture, GL_TEXTURE_BORDER_COLOR, border);
-    glBindTextureUnit(unit, texture);
-    return texture;
+    return sampled_texture(texture, unit, levels.size(), wrap_s, wrap_t, min_filter, mag_filter);
 }
 
 GLuint float_texture_array(GLuint unit, const std::vector<std::vector<TextureLevel>>& layers, GLenum wrap,
@@ -189,16 +201,7 @@ GLuint float_texture_array(GLuint unit, const std::vector<std::vector<TextureLev
         for (std::size_t k = 0; k < first.size(); ++k)
             glTextureSubImage3D(texture, static_cast<GLint>(k), 0, 0, static_cast<GLint>(j), layers[j][k].width,
                                 layers[j][k].height, 1, GL_RGBA, GL_FLOAT, layers[j][k].texels);
-    glTextureParameteri(texture, GL_TEXTURE_BASE_LEVEL, 0);
-    glTextureParameteri(texture, GL_TEXTURE_MAX_LEVEL, static_cast<GLint>(first.size()) - 1);
-    glTextureParameteri(texture, GL_TEXTURE_WRAP_S, static_cast<GLint>(wrap));
-    glTextureParameteri(texture, GL_TEXTURE_WRAP_T, static_cast<GLint>(wrap));
-    glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(min_filter));
-    glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(mag_filter));
-    const float border[4] = {0, 0, 0, 0};
-    glTextureParameterfv(texture, GL_TEXTURE_BORDER_COLOR, border);
-    glBindTextureUnit(unit, texture);
-    return texture;
+    return sampled_texture(texture, unit, first.size(), wrap, wrap, min_filter, mag_filter);
 }
 
 }  // namespace cmfilter_gl
