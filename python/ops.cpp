@@ -204,6 +204,28 @@ void bind_ops(py::module_& m)
         "reads it with any map on those breakpoints.");
 
     m.def(
+        "segment_colors",
+        [](const std::string& pyramid, const std::string& table, const std::string& ocio_config) {
+        const ColorConfig config = load_config(ocio_config);
+        SegmentColors c = unwrap(segment_pyramid_colors(pyramid, table, config));
+        warn_all(c.warnings);
+        py::array_t<double> colors({static_cast<py::ssize_t>(c.colors.size()), static_cast<py::ssize_t>(3)});
+        auto v = colors.mutable_unchecked<2>();
+        for (std::size_t k = 0; k < c.colors.size(); ++k)
+            for (int ch = 0; ch < 3; ++ch) v(static_cast<py::ssize_t>(k), ch) = c.colors[k][ch];
+        py::dict out;
+        out["breakpoints"] = c.breakpoints;
+        out["colors"] = colors;
+        out["fit_de"] = c.fit_de;
+        return out;
+        },
+        py::arg("pyramid"), py::arg("table"), py::kw_only(), py::arg("ocio_config") = "",
+        "The colours C_0 .. C_K at the breakpoints of a segment pyramid for the map of `table`, what "
+        "shaders/cmfilter_segments.glsl weighs the ramp means by and apply(method='segments') uses: the map's own "
+        "colours there, or for a tolerance bake its least-squares colours over the driver: a dict of `breakpoints`, "
+        "`colors` ((K + 1, 3) scene-linear) and `fit_de`. A map that does not fit the breakpoints is refused.");
+
+    m.def(
         "choose_method",
         [](const std::string& moments, const std::string& table, double tolerance, const std::vector<double>& lods,
            const std::vector<std::string>& candidates, const std::string& colormap, const std::string& driver,

@@ -8,6 +8,10 @@
 //     mean C(f) = C_0 + sum_k (C_k - C_{k-1}) R_k,
 // exact for a box filter (sec. 3, eq. 1) for every map linear between the
 // breakpoints, whatever its colours: edit the colours live, no re-bake.
+// A tolerance bake (cmfilter:segment_colors least-squares) holds fewer
+// breakpoints than the map has: there C_k are the map's least-squares
+// colours over the driver, not its colours at t_k (Python's
+// cmfilter.segment_colors(pyramid, table) computes them, as apply does).
 // A function library: no #version, no main.
 //
 // Uploading. The K channels, four at a time (s001..s004 in layer 0, s005..

@@ -163,7 +163,8 @@ int through_segments(const std::string& luts, const ColorConfig& config, const M
             }
             auto segments = SegmentPyramidTexture::open(bake.output_path);
             if (!segments) return 1;
-            const std::vector<Rgb> colors = ramp_colors(map->map, segments->info().breakpoints);
+            const std::vector<Rgb> colors =
+                ramp_colors(map->map, segments->info().breakpoints, segments->info().weights());
             std::vector<float> ramps(segments->channels());
             const auto coordinate = [](int i, int axis) {
                 const int texel = i % (kSize * kSize);

@@ -113,6 +113,30 @@ def test_segment_pyramid_recoloured_is_numpys_box_mean_of_the_new_map(baked, lut
     assert choice["method"] == "segments"
 
 
+def test_segment_colors_of_a_tolerance_bake_are_numpys_weighted_least_squares(baked, luts, tmp_path):
+    # A tolerance bake of the smooth terrain map: the colours at its
+    # breakpoints are NumPy's least squares of C0 over the driver's values
+    # (hat functions of the breakpoints, each value weighted by its share),
+    # and apply(method="segments") is the box mean of the curve through them.
+    f, _, table = baked
+    pyramid = str(tmp_path / "fitted.exr")
+    info = cmfilter.bake_segment_pyramid(str(tmp_path / "driver.png"), pyramid, tables=[table], tolerance=1.0)
+    got = cmfilter.segment_colors(pyramid, table)
+    t = np.array(got["breakpoints"])
+    assert info["breakpoints"] == got["breakpoints"] and got["colors"].shape == (len(t), 3)
+    values, counts = np.unique(f.astype(np.float32), return_counts=True)
+    hats = np.stack([np.interp(values, t, np.eye(len(t))[k]) for k in range(len(t))], axis=1)
+    texels = linear_colormap(luts / "terrain.png")
+    w = np.sqrt(counts / counts.sum())[:, None]
+    want, *_ = np.linalg.lstsq(w * hats, w * c0(texels, 0, 1, values), rcond=None)
+    np.testing.assert_allclose(got["colors"], want, atol=1e-5)
+    curve = np.stack([np.interp(f, t, got["colors"][:, ch]) for ch in range(3)], axis=-1)
+    for lod, n in ((0, 16), (2, 4)):
+        b = 16 // n
+        np.testing.assert_allclose(cmfilter.apply(pyramid, table, lod=lod, method="segments"),
+                                   curve.reshape(n, b, n, b, 3).mean(axis=(1, 3)), atol=1e-5)
+
+
 def test_apply_clamped_lod_warns(baked):
     _, moments, table = baked
     with pytest.warns(UserWarning, match="lod"):

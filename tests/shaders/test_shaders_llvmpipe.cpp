@@ -512,7 +512,7 @@ void check_segments(TextureWrap wrap)
     }
     const std::vector<float> result = run_kernel(program, points, count, count * 8, &parameters, sizeof parameters);
 
-    const std::vector<Rgb> steps = ramp_colors(recoloured, info.breakpoints);
+    const std::vector<Rgb> steps = ramp_colors(recoloured, info.breakpoints, info.weights());
     std::vector<float> ramps(K);
     Tally colour, grad;
     for (std::size_t k = 0; k < count; ++k) {

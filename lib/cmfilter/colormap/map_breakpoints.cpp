@@ -220,12 +220,92 @@ Rgb breakpoint_interpolant(const ColorMap& map, const std::vector<double>& t, do
     return (1 - w) * map.evaluate(t[k - 1]) + w * map.evaluate(t[k]);
 }
 
-BreakpointFit breakpoint_fit(const ColorMap& map, const std::vector<double>& breakpoints, double lo, double hi)
+namespace {
+
+// The largest over the maps of the weighted mean CIEDE2000 between C0 and
+// its least-squares curve through `t` (fitted with `weights`, measured over
+// `samples`).
+double fitted_mean_error(const BreakpointSelectionOptions& options, const std::vector<double>& t,
+                         const DriverWeights& weights, const std::vector<WeightedValue>& samples, double total_weight)
+{
+    double worst = 0;
+    for (const ColorMap* map : options.maps) {
+        const std::vector<Rgb> c = breakpoint_colors(*map, t, &weights);
+        double sum = 0;
+        for (const WeightedValue& v : samples)
+            sum += v.weight * ciede2000_linear_rgb(map->evaluate(v.f), breakpoint_curve(t, c, v.f));
+        worst = std::max(worst, sum / total_weight);
+    }
+    return worst;
+}
+
+// BreakpointSelectionOptions::fit_colors: with least-squares colours, remove
+// breakpoints (the one whose removal raises the error least) while within
+// the tolerance, then move each breakpoint in turn to the best of 12 places
+// between its neighbours (within [lo, hi]), and remove again, until a pass
+// removes none.
+std::vector<double> refit_breakpoints(const BreakpointSelectionOptions& options, std::vector<double> t,
+                                      const DriverWeights& weights, const std::vector<WeightedValue>& samples)
+{
+    double total_weight = 0;
+    for (const WeightedValue& v : samples) total_weight += v.weight;
+    if (!(total_weight > 0)) return t;
+    const auto cost = [&](const std::vector<double>& k) {
+        return fitted_mean_error(options, k, weights, samples, total_weight);
+    };
+    double current = cost(t);
+    for (int pass = 0; pass < 6; ++pass) {
+        bool removed = false;
+        while (t.size() > 2) {
+            std::size_t best = t.size();
+            double best_cost = std::numeric_limits<double>::infinity();
+            for (std::size_t j = 0; j < t.size(); ++j) {
+                std::vector<double> without = t;
+                without.erase(without.begin() + static_cast<std::ptrdiff_t>(j));
+                const double c = cost(without);
+                if (c < best_cost) {
+                    best_cost = c;
+                    best = j;
+                }
+            }
+            if (!(best_cost <= options.tolerance_de)) break;
+            t.erase(t.begin() + static_cast<std::ptrdiff_t>(best));
+            current = best_cost;
+            removed = true;
+        }
+        if (pass > 0 && !removed) break;
+        constexpr int kPlaces = 12;
+        for (std::size_t j = 0; j < t.size(); ++j) {
+            const double a = j > 0 ? t[j - 1] : options.lo, b = j + 1 < t.size() ? t[j + 1] : options.hi;
+            if (!(b > a)) continue;
+            const double keep = t[j];
+            double best_at = keep;
+            for (int p = 1; p <= kPlaces; ++p) {
+                const double at = a + (b - a) * p / (kPlaces + 1.0);
+                if (!(at > a && at < b) || at == keep) continue;
+                t[j] = at;
+                const double c = cost(t);
+                if (c < current) {
+                    current = c;
+                    best_at = at;
+                }
+            }
+            t[j] = best_at;
+        }
+    }
+    return t;
+}
+
+}  // namespace
+
+BreakpointFit breakpoint_fit(const ColorMap& map, const std::vector<double>& breakpoints, double lo, double hi,
+                             const DriverWeights* weights)
 {
     BreakpointFit fit;
     fit.worst_f = lo;
+    const std::vector<Rgb> colors = breakpoint_colors(map, breakpoints, weights);
     for (double f : fit_samples(map, breakpoints, lo, hi)) {
-        const double de = ciede2000_linear_rgb(map.evaluate(f), breakpoint_interpolant(map, breakpoints, f));
+        const double de = ciede2000_linear_rgb(map.evaluate(f), breakpoint_curve(breakpoints, colors, f));
         if (de > fit.max_de) {
             fit.max_de = de;
             fit.worst_f = f;
@@ -257,6 +337,10 @@ Expected<BreakpointSelection> select_breakpoints(const BreakpointSelectionOption
     if (candidates.size() > 2 && (options.tolerance_de > 0 || capped)) {
         const std::vector<WeightedValue> samples = weighted_samples(options, candidates);
         out = remove_breakpoints(options, candidates, samples);
+        if (options.fit_colors && options.tolerance_de > 0 && options.driver && !options.driver->empty()) {
+            sel.color_weights = driver_weights(*options.driver, lo, hi);
+            out = refit_breakpoints(options, std::move(out), sel.color_weights, samples);
+        }
     } else {
         out = candidates;
     }
@@ -268,12 +352,14 @@ Expected<BreakpointSelection> select_breakpoints(const BreakpointSelectionOption
         else out.push_back(b);
     }
     const std::vector<WeightedValue> samples = weighted_samples(options, out);
+    const DriverWeights* weights = sel.color_weights.empty() ? nullptr : &sel.color_weights;
     for (const ColorMap* map : options.maps) {
-        sel.fits.push_back(breakpoint_fit(*map, out, lo, hi));
+        sel.fits.push_back(breakpoint_fit(*map, out, lo, hi, weights));
         sel.max_de = std::max(sel.max_de, sel.fits.back().max_de);
+        const std::vector<Rgb> colors = breakpoint_colors(*map, out, weights);
         double sum = 0, weight = 0;
         for (const WeightedValue& v : samples) {
-            sum += v.weight * ciede2000_linear_rgb(map->evaluate(v.f), breakpoint_interpolant(*map, out, v.f));
+            sum += v.weight * ciede2000_linear_rgb(map->evaluate(v.f), breakpoint_curve(out, colors, v.f));
             weight += v.weight;
         }
         sel.mean_de.push_back(weight > 0 ? sum / weight : 0.0);
@@ -288,10 +374,11 @@ void ramp_weights(const std::vector<double>& t, double f, double* ramps)
         ramps[k - 1] = std::clamp((f - t[k - 1]) / (t[k] - t[k - 1]), 0.0, 1.0);  // r_k(f)
 }
 
-std::vector<Rgb> ramp_colors(const ColorMap& map, const std::vector<double>& t)
+std::vector<Rgb> ramp_colors(const ColorMap& map, const std::vector<double>& t, const DriverWeights* weights)
 {
-    std::vector<Rgb> c{map.evaluate(t.front())};
-    for (std::size_t k = 1; k < t.size(); ++k) c.push_back(map.evaluate(t[k]) - map.evaluate(t[k - 1]));
+    const std::vector<Rgb> at = breakpoint_colors(map, t, weights);
+    std::vector<Rgb> c{at.front()};
+    for (std::size_t k = 1; k < t.size(); ++k) c.push_back(at[k] - at[k - 1]);
     return c;
 }
 

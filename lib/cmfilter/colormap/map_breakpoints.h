@@ -18,6 +18,7 @@
 #pragma once
 
 #include "cmfilter/color/color.h"
+#include "cmfilter/colormap/breakpoint_colors.h"
 #include "cmfilter/colormap/color_map.h"
 #include "cmfilter/util/error.h"
 
@@ -43,10 +44,12 @@ struct BreakpointFit {
     double worst_f = 0;  // where
 };
 
-// C0 against its interpolant through `breakpoints`, at every knot of C0 and
-// every breakpoint in [lo, hi], lo, hi and the midpoints between them
-// (both are piecewise linear: their RGB difference peaks at those knots).
-BreakpointFit breakpoint_fit(const ColorMap& map, const std::vector<double>& breakpoints, double lo, double hi);
+// C0 against its curve through `breakpoints` (breakpoint_colors.h: the
+// interpolant, or with `weights` the least-squares colours), at every knot
+// of C0 and every breakpoint in [lo, hi], lo, hi and the midpoints between
+// them (both are piecewise linear: their RGB difference peaks at those knots).
+BreakpointFit breakpoint_fit(const ColorMap& map, const std::vector<double>& breakpoints, double lo, double hi,
+                             const DriverWeights* weights = nullptr);
 
 struct BreakpointSelection {
     std::vector<double> breakpoints;  // at least two, ascending
@@ -55,6 +58,10 @@ struct BreakpointSelection {
     double max_de = 0;                // the largest of fits
     double max_mean_de = 0;           // the largest of mean_de
     std::size_t candidates = 0;       // the maps' exact breakpoints together
+    // Non-empty when the colours are least-squares fitted
+    // (BreakpointSelectionOptions::fit_colors): the driver's weights they are
+    // fitted with, which fits and mean_de use.
+    DriverWeights color_weights;
 };
 
 struct BreakpointSelectionOptions {
@@ -73,6 +80,14 @@ struct BreakpointSelectionOptions {
     // > 0: go on removing past the tolerance down to this many breakpoints
     // (at least 2); the result says the mean errors it then reaches.
     std::size_t max_breakpoints = 0;
+    // With a tolerance and a driver: the colours through the breakpoints
+    // least-squares fitted to each map over the driver's values
+    // (breakpoint_colors.h) instead of the map's own, and the breakpoints then
+    // moved off the maps' knots (each, in turn, to the best of 12 places
+    // between its neighbours) and removed further while every map stays
+    // within the tolerance: fewer channels for smooth maps, whose
+    // interpolant errs to one side of the curve between breakpoints.
+    bool fit_colors = false;
 };
 // BadInput when no map is given or a map is invalid (naming the field).
 Expected<BreakpointSelection> select_breakpoints(const BreakpointSelectionOptions& options);
@@ -80,9 +95,12 @@ Expected<BreakpointSelection> select_breakpoints(const BreakpointSelectionOption
 // r_1(f) .. r_K(f) for breakpoints t_0 .. t_K (K = breakpoints.size() - 1).
 void ramp_weights(const std::vector<double>& breakpoints, double f, double* ramps);
 
-// C(t_0) and the steps C(t_k) - C(t_{k-1}), k = 1..K: what the ramp means
-// are weighted by (the colours a shader recolours with).
-std::vector<Rgb> ramp_colors(const ColorMap& map, const std::vector<double>& breakpoints);
+// c_0 and the steps c_k - c_{k-1}, k = 1..K, of the colours c_k through the
+// breakpoints (breakpoint_colors.h: C(t_k), or with `weights` the
+// least-squares colours): what the ramp means are weighted by (the colours a
+// shader recolours with).
+std::vector<Rgb> ramp_colors(const ColorMap& map, const std::vector<double>& breakpoints,
+                             const DriverWeights* weights = nullptr);
 
 // mean C = colors[0] + sum_k colors[k] ramps[k - 1].
 Rgb ramp_color(const std::vector<Rgb>& colors, const float* ramps);

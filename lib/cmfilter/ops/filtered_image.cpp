@@ -231,7 +231,7 @@ Expected<FilteredImage> apply_segments(const ApplyOptions& options, const ColorC
                                          "the map of table '" + options.table_path + "' ('" + out.map_path + "')");
     if (!fit) return fit.error();
     out.segment_fit_de = fit->max_de;
-    const std::vector<Rgb> colors = ramp_colors(map->map.map, info.breakpoints);
+    const std::vector<Rgb> colors = ramp_colors(map->map.map, info.breakpoints, info.weights());
     record_driver(out.moments, info);
     set_output_lod(out, options, pyramid->reachable_levels() - 1, info.width, info.height);
     const int H = out.height;

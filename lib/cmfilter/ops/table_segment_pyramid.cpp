@@ -3,6 +3,7 @@
 
 #include "cmfilter/tables/gaussian_color_table_file.h"
 #include "cmfilter/tables/table_color_map.h"
+#include "cmfilter/texture/segment_pyramid_texture.h"
 
 namespace cmfilter {
 
@@ -32,6 +33,29 @@ Expected<TableSegmentPyramid> bake_table_segment_pyramid(const TableSegmentPyram
     auto baked = bake_segment_pyramid(bake);
     if (!baked) return baked.error();
     out.result = std::move(*baked);
+    return out;
+}
+
+Expected<SegmentColors> segment_pyramid_colors(const std::string& pyramid_path, const std::string& table_path,
+                                               const ColorConfig& config)
+{
+    auto pyramid = SegmentPyramidTexture::open(pyramid_path);
+    if (!pyramid) return pyramid.error();
+    const SegmentPyramidInfo& info = pyramid->info();
+    auto table = read_gaussian_color_table(table_path);
+    if (!table) return table.error();
+    TableColorMapOptions mo;
+    mo.table_path = table_path;
+    auto map = load_table_color_map(*table, mo, config);
+    if (!map) return map.error();
+    auto fit = check_segment_pyramid_map(info, pyramid_path, map->map.map,
+                                         "the map of table '" + table_path + "' ('" + map->map.provenance.path + "')");
+    if (!fit) return fit.error();
+    SegmentColors out;
+    out.breakpoints = info.breakpoints;
+    out.colors = breakpoint_colors(map->map.map, info.breakpoints, info.weights());
+    out.fit_de = fit->max_de;
+    out.warnings = map->warnings;
     return out;
 }
 

@@ -32,4 +32,19 @@ struct TableSegmentPyramid {
 Expected<TableSegmentPyramid> bake_table_segment_pyramid(const TableSegmentPyramidOptions& options,
                                                          const ColorConfig& config);
 
+// The colours C_0 .. C_K a shader weighs the ramp means of the segment
+// pyramid at `pyramid_path` by for the map of the table at `table_path`
+// (shaders/cmfilter_segments.glsl): the map's at the breakpoints, or for a
+// pyramid of least-squares colours (a tolerance bake) the map's least-squares
+// colours over the driver weights it records (breakpoint_colors.h), what
+// apply --method segments uses. The map is checked as apply checks it.
+struct SegmentColors {
+    std::vector<double> breakpoints;
+    std::vector<Rgb> colors;  // one per breakpoint
+    double fit_de = 0;        // the map through them: the largest CIEDE2000
+    std::vector<std::string> warnings;
+};
+Expected<SegmentColors> segment_pyramid_colors(const std::string& pyramid_path, const std::string& table_path,
+                                               const ColorConfig& config);
+
 }  // namespace cmfilter

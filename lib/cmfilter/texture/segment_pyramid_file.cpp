@@ -26,6 +26,13 @@ std::string number_text(double v)
     return buf;
 }
 
+std::string float_text(float v)
+{
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(v));  // round-trips a float
+    return buf;
+}
+
 std::string short_number(double v)
 {
     char buf[32];
@@ -55,14 +62,15 @@ std::vector<std::string> split(const std::string& s, char sep)
 // pyramid (the level geometry of box_pyramid.h): what apply would measure
 // against the reference at those LODs.
 std::vector<double> filtered_fit_errors(const ColorMap& map, const std::vector<double>& breakpoints,
-                                        const DriverImage& driver, int threads)
+                                        const DriverWeights* weights, const DriverImage& driver, int threads)
 {
     const int W = driver.width, H = driver.height;
+    const std::vector<Rgb> colors = breakpoint_colors(map, breakpoints, weights);
     BoxPyramidAccumulator acc(W, H, 6, threads);
     acc.add_rows(0, H, [&](int y, int, double* planes) {
         const float* row = driver.values.data() + static_cast<std::size_t>(y) * W;
         for (int x = 0; x < W; ++x) {
-            const Rgb c = map.evaluate(row[x]), i = breakpoint_interpolant(map, breakpoints, row[x]);
+            const Rgb c = map.evaluate(row[x]), i = breakpoint_curve(breakpoints, colors, row[x]);
             const double v[6] = {c.r, c.g, c.b, i.r, i.g, i.b};
             for (int ch = 0; ch < 6; ++ch) planes[static_cast<std::size_t>(ch) * W + x] = v[ch];
         }
@@ -91,7 +99,10 @@ double worst_filtered(const SegmentPyramidBakeOptions& options, const Breakpoint
 {
     double worst = 0;
     for (const ColorMap* map : options.maps)
-        for (double e : filtered_fit_errors(*map, sel.breakpoints, driver, options.threads)) worst = std::max(worst, e);
+        for (double e :
+             filtered_fit_errors(*map, sel.breakpoints, sel.color_weights.empty() ? nullptr : &sel.color_weights,
+                                 driver, options.threads))
+            worst = std::max(worst, e);
     return worst;
 }
 
@@ -108,6 +119,7 @@ Expected<CheckedSelection> select_within(const SegmentPyramidBakeOptions& option
     so.hi = driver.max;
     so.driver = &driver.values;
     so.tolerance_de = options.tolerance_de;
+    so.fit_colors = true;
     const int limit = options.max_channels > 0 ? std::min(options.max_channels, kSegmentPyramidMaxChannels)
                                                : kSegmentPyramidMaxChannels;
     so.max_breakpoints = static_cast<std::size_t>(limit) + 1;
@@ -159,8 +171,10 @@ void set_segment_pyramid_metadata(OIIO::ImageSpec& spec, const SegmentPyramidInf
     spec.attribute("cmfilter:version", version());
     spec.attribute("cmfilter:equation",
                    "channel k of level j: box mean of r_k(f) = clamp((f - t_{k-1}) / (t_k - t_{k-1}), 0, 1); mean C(f) "
-                   "= C(t_0) + sum_k (C(t_k) - C(t_{k-1})) R_k for any map linear between the breakpoints t_k "
-                   "(Heitz et al. 2013, sec. 3, eq. 1 with a box kernel)");
+                   "= c_0 + sum_k (c_k - c_{k-1}) R_k, c_k = C(t_k) for any map linear between the breakpoints t_k "
+                   "(cmfilter:segment_colors interpolated), or the least-squares colours of the map over the driver "
+                   "weights cmfilter:segment_weight_values and _shares (least-squares) (Heitz et al. 2013, sec. 3, "
+                   "eq. 1 with a box kernel)");
     spec.attribute("cmfilter:layout", "level k is max(1, W >> k) x max(1, H >> k); texel (x, y) of level k is the "
                                       "box mean over level-0 [x W / w_k, (x+1) W / w_k) x [y H / h_k, (y+1) H / h_k)");
     spec.attribute("cmfilter:levels", info.levels);
@@ -183,6 +197,16 @@ void set_segment_pyramid_metadata(OIIO::ImageSpec& spec, const SegmentPyramidInf
     std::vector<std::string> maps;
     for (const std::string& m : info.map_sources) maps.push_back(m.empty() ? m : path_for_record(m, path));
     spec.attribute("cmfilter:map_sources", joined(maps, ";"));
+    if (!info.color_weights.empty()) {
+        std::vector<std::string> v, w;
+        for (float x : info.color_weights.values) v.push_back(float_text(x));
+        for (float x : info.color_weights.shares) w.push_back(float_text(x));
+        spec.attribute("cmfilter:segment_colors", "least-squares");
+        spec.attribute("cmfilter:segment_weight_values", joined(v, " "));
+        spec.attribute("cmfilter:segment_weight_shares", joined(w, " "));
+    } else {
+        spec.attribute("cmfilter:segment_colors", "interpolated");
+    }
     if (info.method_choice) {
         MethodToleranceRecord r = *info.method_choice;
         r.table = path_for_record(r.table, path);
@@ -197,7 +221,7 @@ Expected<SegmentPyramidInfo> get_segment_pyramid_metadata(const OIIO::ImageSpec&
         return bad_input("'" + path + "' is not a cmfilter segment pyramid (cmfilter:kind is '" + kind +
                          "', expected '" + kSegmentPyramidKind + "')");
     const int version = spec.get_int_attribute("cmfilter:format_version", 0);
-    if (version != kSegmentPyramidFormatVersion)
+    if (version != kSegmentPyramidFormatVersion && version != 1)
         return bad_input("'" + path + "' has segment pyramid format version " + std::to_string(version) +
                          ", this cmfilter reads version " + std::to_string(kSegmentPyramidFormatVersion));
     SegmentPyramidInfo info;
@@ -224,6 +248,23 @@ Expected<SegmentPyramidInfo> get_segment_pyramid_metadata(const OIIO::ImageSpec&
     info.baked_by = spec.get_string_attribute("cmfilter:version");
     info.method_choice = get_method_tolerance_metadata(spec);
     if (info.method_choice) info.method_choice->table = path_from_record(info.method_choice->table, path);
+    const std::string colors = spec.get_string_attribute("cmfilter:segment_colors", "interpolated");
+    bool weights_ok = colors == "interpolated";
+    if (colors == "least-squares") {
+        std::istringstream v(spec.get_string_attribute("cmfilter:segment_weight_values"));
+        std::istringstream w(spec.get_string_attribute("cmfilter:segment_weight_shares"));
+        for (float x; v >> x;) info.color_weights.values.push_back(x);
+        for (float x; w >> x;) info.color_weights.shares.push_back(x);
+        weights_ok = !info.color_weights.empty() &&
+                     info.color_weights.values.size() == info.color_weights.shares.size();
+        for (std::size_t i = 0; weights_ok && i < info.color_weights.values.size(); ++i)
+            weights_ok = std::isfinite(info.color_weights.values[i]) && std::isfinite(info.color_weights.shares[i]) &&
+                         info.color_weights.shares[i] >= 0;
+    }
+    if (!weights_ok)
+        return bad_input("'" + path + "' has cmfilter:segment_colors '" + colors +
+                         "' without valid driver weights (expected 'interpolated', or 'least-squares' with as many "
+                         "finite cmfilter:segment_weight_values as non-negative cmfilter:segment_weight_shares)");
     bool ascending = info.breakpoints.size() >= 2;
     for (std::size_t k = 0; k < info.breakpoints.size(); ++k)
         ascending = ascending && std::isfinite(info.breakpoints[k]) &&
@@ -306,6 +347,7 @@ Expected<SegmentPyramidBakeResult> bake_segment_pyramid(const SegmentPyramidBake
     info.filtered_fit_de = result.filtered_fit_de;
     info.map_sources = options.map_sources;
     info.map_sources.resize(options.maps.size());
+    info.color_weights = result.selection.color_weights;
     info.method_choice = options.method_choice;
 
     const int K = info.channels();
@@ -345,7 +387,7 @@ Expected<BreakpointFit> check_segment_pyramid_map(const SegmentPyramidInfo& info
                                                   const ColorMap& map, const std::string& map_name)
 {
     if (auto st = validate(map, map_name); !st) return st.error();
-    const BreakpointFit fit = breakpoint_fit(map, info.breakpoints, info.driver_min, info.driver_max);
+    const BreakpointFit fit = breakpoint_fit(map, info.breakpoints, info.driver_min, info.driver_max, info.weights());
     const double allowed = std::max(0.0, info.fit_de) + 1e-3;
     if (fit.max_de <= allowed) return fit;
     std::string lacks;

@@ -11,7 +11,10 @@
 //
 // The breakpoints are those of one or several maps over the driver's range,
 // all of them (exact), or the fewest that keep every map within a CIEDE2000
-// tolerance of C0. The file is a tiled, mip-mapped OpenEXR of K channels
+// tolerance of C0: then the colours weighed by the ramp means are each map's
+// least-squares colours over the driver's values (breakpoint_colors.h, from
+// weights the file records) and the breakpoints may lie between the maps'
+// knots. The file is a tiled, mip-mapped OpenEXR of K channels
 // s001 .. sK (float32 or half: 4 K or 2 K bytes per level-0 texel) whose
 // cmfilter:* metadata record the breakpoints, the tolerance and the driver;
 // a map is accepted by its fit through the breakpoints, not its colours.
@@ -35,7 +38,9 @@
 namespace cmfilter {
 
 inline constexpr const char* kSegmentPyramidKind = "segment-pyramid";
-inline constexpr int kSegmentPyramidFormatVersion = 1;
+// Version 2 adds the least-squares colours' driver weights (version 1 files,
+// without, read as interpolated colours).
+inline constexpr int kSegmentPyramidFormatVersion = 2;
 inline constexpr int kSegmentPyramidMaxChannels = 999;  // channel names s001 .. s999
 
 struct SegmentPyramidInfo {
@@ -57,7 +62,12 @@ struct SegmentPyramidInfo {
     // box means against C0's (what apply measures against the reference).
     double filtered_fit_de = 0;
     std::vector<std::string> map_sources;  // the maps they were chosen for, for messages
-    std::string baked_by;                  // cmfilter version (filled in on read)
+    // Non-empty with a tolerance: the colours through the breakpoints are the
+    // least-squares fit of the map over these driver weights
+    // (breakpoint_colors.h), for every map applied; empty: the map's own C(t_k).
+    DriverWeights color_weights;
+    const DriverWeights* weights() const { return color_weights.empty() ? nullptr : &color_weights; }
+    std::string baked_by;  // cmfilter version (filled in on read)
     // Set when bake-moments --tolerance chose this representation.
     std::optional<MethodToleranceRecord> method_choice;
 
@@ -101,7 +111,7 @@ Expected<SegmentPyramidBakeResult> bake_segment_pyramid(const SegmentPyramidBake
                                                         const HashedDriver& driver);
 
 // How `map` fits `info`'s breakpoints over the driver's range: accepted when
-// its largest CIEDE2000 from its interpolant is within that of the maps the
+// its largest CIEDE2000 from its curve through them (info.weights()) is within that of the maps the
 // pyramid was baked for (fit_de, plus 1e-3 for rounding: 0 for a map on the
 // same breakpoints with any colours); else BadInput
 // naming the pyramid, `map_name`, the error and where, and the breakpoints the

@@ -144,7 +144,7 @@ TEST_CASE("segment pyramid: every level recoloured is the box mean of the new ma
         auto fit = check_segment_pyramid_map(tex->info(), path, other, "the other map");
         REQUIRE(fit);
         CHECK(fit->max_de <= 1e-9);
-        const std::vector<Rgb> colors = ramp_colors(other, tex->info().breakpoints);
+        const std::vector<Rgb> colors = ramp_colors(other, tex->info().breakpoints, tex->info().weights());
         std::vector<float> ramps(tex->channels());
         for (int k = 0; k < tex->reachable_levels(); ++k) {
             const int w = std::max(1, kW >> k), h = std::max(1, kH >> k);
