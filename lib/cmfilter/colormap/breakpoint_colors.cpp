@@ -20,8 +20,8 @@ DriverWeights driver_weights(const std::vector<float>& driver, double lo, double
     const double n = static_cast<double>(driver.size());
     for (std::size_t b = 0; b < sum.size(); ++b) {
         if (count[b] == 0) continue;
-        out.values.push_back(static_cast<float>(sum[b] / count[b]));
-        out.shares.push_back(static_cast<float>(count[b] / n));
+        out.values.push_back(sum[b] / count[b]);
+        out.shares.push_back(count[b] / n);
     }
     return out;
 }

@@ -21,8 +21,8 @@ namespace cmfilter {
 // The driver's values in bins of [lo, hi]: each non-empty bin's mean value
 // and share of the texels (shares sum to 1), ascending.
 struct DriverWeights {
-    std::vector<float> values;
-    std::vector<float> shares;
+    std::vector<double> values;
+    std::vector<double> shares;
     bool empty() const { return values.empty(); }
 };
 

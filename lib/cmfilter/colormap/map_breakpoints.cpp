@@ -88,16 +88,8 @@ std::vector<WeightedValue> weighted_samples(const BreakpointSelectionOptions& op
     std::vector<WeightedValue> out;
     const double lo = options.lo, hi = options.hi;
     if (options.driver && !options.driver->empty()) {
-        constexpr int kBins = 8192;
-        std::vector<double> sum(kBins, 0.0), count(kBins, 0.0);
-        const double scale = hi > lo ? kBins / (hi - lo) : 0.0;
-        for (float v : *options.driver) {
-            const int b = std::clamp(static_cast<int>((v - lo) * scale), 0, kBins - 1);
-            sum[b] += v;
-            count[b] += 1;
-        }
-        for (int b = 0; b < kBins; ++b)
-            if (count[b] > 0) out.push_back({sum[b] / count[b], count[b]});
+        const DriverWeights bins = driver_weights(*options.driver, lo, hi, 8192);
+        for (std::size_t i = 0; i < bins.values.size(); ++i) out.push_back({bins.values[i], bins.shares[i]});
         return out;
     }
     std::vector<double> all;
@@ -352,7 +344,7 @@ Expected<BreakpointSelection> select_breakpoints(const BreakpointSelectionOption
         else out.push_back(b);
     }
     const std::vector<WeightedValue> samples = weighted_samples(options, out);
-    const DriverWeights* weights = sel.color_weights.empty() ? nullptr : &sel.color_weights;
+    const DriverWeights* weights = sel.weights();
     for (const ColorMap* map : options.maps) {
         sel.fits.push_back(breakpoint_fit(*map, out, lo, hi, weights));
         sel.max_de = std::max(sel.max_de, sel.fits.back().max_de);

@@ -62,6 +62,7 @@ struct BreakpointSelection {
     // (BreakpointSelectionOptions::fit_colors): the driver's weights they are
     // fitted with, which fits and mean_de use.
     DriverWeights color_weights;
+    const DriverWeights* weights() const { return color_weights.empty() ? nullptr : &color_weights; }
 };
 
 struct BreakpointSelectionOptions {

@@ -7,6 +7,20 @@
 
 namespace cmfilter {
 
+namespace {
+
+// The colour map of the table at `path`, as its cmfilter:source records it.
+Expected<TableColorMap> table_color_map(const std::string& path, const ColorConfig& config)
+{
+    auto table = read_gaussian_color_table(path);
+    if (!table) return table.error();
+    TableColorMapOptions mo;
+    mo.table_path = path;
+    return load_table_color_map(*table, mo, config);
+}
+
+}  // namespace
+
 Expected<TableSegmentPyramid> bake_table_segment_pyramid(const TableSegmentPyramidOptions& options,
                                                          const ColorConfig& config)
 {
@@ -16,11 +30,7 @@ Expected<TableSegmentPyramid> bake_table_segment_pyramid(const TableSegmentPyram
     TableSegmentPyramid out;
     std::vector<TableColorMap> maps;
     for (const std::string& path : options.table_paths) {
-        auto table = read_gaussian_color_table(path);
-        if (!table) return table.error();
-        TableColorMapOptions mo;
-        mo.table_path = path;
-        auto map = load_table_color_map(*table, mo, config);
+        auto map = table_color_map(path, config);
         if (!map) return map.error();
         out.map_paths.push_back(map->map.provenance.path);
         out.warnings.insert(out.warnings.end(), map->warnings.begin(), map->warnings.end());
@@ -42,11 +52,7 @@ Expected<SegmentColors> segment_pyramid_colors(const std::string& pyramid_path, 
     auto pyramid = SegmentPyramidTexture::open(pyramid_path);
     if (!pyramid) return pyramid.error();
     const SegmentPyramidInfo& info = pyramid->info();
-    auto table = read_gaussian_color_table(table_path);
-    if (!table) return table.error();
-    TableColorMapOptions mo;
-    mo.table_path = table_path;
-    auto map = load_table_color_map(*table, mo, config);
+    auto map = table_color_map(table_path, config);
     if (!map) return map.error();
     auto fit = check_segment_pyramid_map(info, pyramid_path, map->map.map,
                                          "the map of table '" + table_path + "' ('" + map->map.provenance.path + "')");

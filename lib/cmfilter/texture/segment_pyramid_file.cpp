@@ -26,13 +26,6 @@ std::string number_text(double v)
     return buf;
 }
 
-std::string float_text(float v)
-{
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(v));  // round-trips a float
-    return buf;
-}
-
 std::string short_number(double v)
 {
     char buf[32];
@@ -99,9 +92,7 @@ double worst_filtered(const SegmentPyramidBakeOptions& options, const Breakpoint
 {
     double worst = 0;
     for (const ColorMap* map : options.maps)
-        for (double e :
-             filtered_fit_errors(*map, sel.breakpoints, sel.color_weights.empty() ? nullptr : &sel.color_weights,
-                                 driver, options.threads))
+        for (double e : filtered_fit_errors(*map, sel.breakpoints, sel.weights(), driver, options.threads))
             worst = std::max(worst, e);
     return worst;
 }
@@ -199,8 +190,8 @@ void set_segment_pyramid_metadata(OIIO::ImageSpec& spec, const SegmentPyramidInf
     spec.attribute("cmfilter:map_sources", joined(maps, ";"));
     if (!info.color_weights.empty()) {
         std::vector<std::string> v, w;
-        for (float x : info.color_weights.values) v.push_back(float_text(x));
-        for (float x : info.color_weights.shares) w.push_back(float_text(x));
+        for (double x : info.color_weights.values) v.push_back(number_text(x));
+        for (double x : info.color_weights.shares) w.push_back(number_text(x));
         spec.attribute("cmfilter:segment_colors", "least-squares");
         spec.attribute("cmfilter:segment_weight_values", joined(v, " "));
         spec.attribute("cmfilter:segment_weight_shares", joined(w, " "));
@@ -253,8 +244,8 @@ Expected<SegmentPyramidInfo> get_segment_pyramid_metadata(const OIIO::ImageSpec&
     if (colors == "least-squares") {
         std::istringstream v(spec.get_string_attribute("cmfilter:segment_weight_values"));
         std::istringstream w(spec.get_string_attribute("cmfilter:segment_weight_shares"));
-        for (float x; v >> x;) info.color_weights.values.push_back(x);
-        for (float x; w >> x;) info.color_weights.shares.push_back(x);
+        for (double x; v >> x;) info.color_weights.values.push_back(x);
+        for (double x; w >> x;) info.color_weights.shares.push_back(x);
         weights_ok = !info.color_weights.empty() &&
                      info.color_weights.values.size() == info.color_weights.shares.size();
         for (std::size_t i = 0; weights_ok && i < info.color_weights.values.size(); ++i)
