@@ -253,3 +253,27 @@ TEST_CASE("segment pyramid: bad options and another kind of file are refused")
     REQUIRE_FALSE(not_one);
     CHECK(not_one.error().message.find("not a cmfilter segment pyramid") != std::string::npos);
 }
+
+TEST_CASE("segment pyramid: least-squares colours without valid driver weights are refused, naming the file")
+{
+    SegmentPyramidInfo info;
+    info.width = 4;
+    info.height = 2;
+    info.levels = 3;  // 4 x 2, 2 x 1, 1 x 1
+    info.breakpoints = {0.2, 0.5, 0.9};
+    info.color_weights.values = {0.25, 0.75};
+    info.color_weights.shares = {0.5, 0.5};
+    OIIO::ImageSpec spec(4, 2, 2, OIIO::TypeDesc::FLOAT);
+    set_segment_pyramid_metadata(spec, info, "w.exr");
+    auto good = get_segment_pyramid_metadata(spec, "w.exr");
+    REQUIRE(good);
+    CHECK(good->color_weights.values == info.color_weights.values);  // %.17g round-trips
+    CHECK(good->color_weights.shares == info.color_weights.shares);
+    spec.attribute("cmfilter:segment_weight_shares", "0.5");  // one share for two values
+    auto bad = get_segment_pyramid_metadata(spec, "w.exr");
+    REQUIRE_FALSE(bad);
+    CHECK(bad.error().message.find("'w.exr'") != std::string::npos);
+    CHECK(bad.error().message.find("least-squares") != std::string::npos);
+    spec.attribute("cmfilter:segment_colors", "cubic");
+    REQUIRE_FALSE(get_segment_pyramid_metadata(spec, "w.exr"));
+}
