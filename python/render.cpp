@@ -60,6 +60,7 @@ void bind_render(py::module_& m)
             MaterialOptions material_options;
             material_options.threads = threads;
             set_method_materials(options.method, material_options);
+            material_options.segments_tolerance = tolerance.value_or(0.0);
             material_options.tables.tolerance = tolerance;
             material_options.tables.plain_bound = shortcut;
             const ColorConfig config = load_config(ocio_config);

@@ -198,6 +198,10 @@ void print_method_choice(std::ostream& out, const MethodChoice& choice);
 struct SurfaceMethodChoice {
     std::size_t surface = 0;
     MethodChoice choice;
+    // The segment pyramid measured (the scene's driver/segments, or baked for
+    // the tolerance into segments_file); empty when none was.
+    std::string segments_path;
+    std::shared_ptr<const TemporaryFile> segments_file;
 };
 Expected<std::vector<SurfaceMethodChoice>>
 choose_texture_methods(const Scene& scene, const std::vector<Material>& materials, const ColorConfig& config,

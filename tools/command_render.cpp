@@ -127,7 +127,8 @@ FieldFlags render_flags()
                                {"MethodChoiceOptions::tolerance", "--tolerance"},
                                {"MethodChoiceOptions::lods", "--measure-lods"},
                                {"MomentBakeOptions::order 4", "bake-moments --order 4"},
-                               {"ApplyOptions::histograms_path", "a histogram pyramid"}});
+                               {"ApplyOptions::histograms_path", "a histogram pyramid"},
+                               {"MaterialOptions::segments", "--method segments"}});
     return flags;
 }
 
@@ -208,6 +209,8 @@ Status run(const RenderArgs& args)
     MaterialOptions material_options;
     material_options.threads = args.threads;
     set_method_materials(*method, material_options);
+    // segments: the fewest breakpoints within --tolerance, else all the map's.
+    material_options.segments_tolerance = args.tolerance.value_or(0.0);
     material_options.tables.tolerance = args.tolerance;
     material_options.tables.plain_bound = args.shortcut;
     if (talk) material_options.note = [](const std::string& line) { std::cerr << "render: " << line << "\n"; };
@@ -268,6 +271,12 @@ Status run(const RenderArgs& args)
             mixture |= m == RenderMethod::Mixture;
             if (m == RenderMethod::Exact)
                 if (auto st = prepare_surface_histograms(*scene, *materials, c.surface, material_options); !st)
+                    return st;
+            auto* texture = std::get_if<TextureDriver>(&(*materials)[c.surface].driver);
+            if (m == RenderMethod::Segments && texture && !texture->segments)
+                if (auto st = open_segments(*scene, c.surface, (*materials)[c.surface], c.segments_path,
+                                            std::move(c.segments_file));
+                    !st)
                     return st;
         }
         if (mixture) {
@@ -465,7 +474,7 @@ Command setup_render(CLI::App& parent)
     app->add_option("-o,--output", args->output, "Image to write (.exr scene-linear, .png/.jpg sRGB)")->required();
     app->add_option(
            "--method", args->method,
-           "naive, gaussian, gaussian-exact (microsurfaces: D_h's exact moments), mixture (texture drivers: two Gaussians of four moments; noise drivers: a Gaussian per square of a footprint cut into up to --sub-footprints squares per axis in the transition; others as gaussian), exact (microsurfaces, or texture drivers with at most 256 values), supersample, reference, or auto (with --tolerance: each texture's and each microsurface's cheapest method, each noise's fewest sub-footprints and then each surface's fewest probes (up to --probes) that meet it, measured; others gaussian)")
+           "naive, gaussian, gaussian-exact (microsurfaces: D_h's exact moments), mixture (texture drivers: two Gaussians of four moments; noise drivers: a Gaussian per square of a footprint cut into up to --sub-footprints squares per axis in the transition; others as gaussian), exact (microsurfaces, or texture drivers with at most 256 values), color-pyramid (texture drivers: the box means of C0(f)), segments (texture drivers: the ramp means between the map's breakpoints, the scene's driver/segments or baked for the map; with --tolerance, the fewest breakpoints within it), supersample, reference, or auto (with --tolerance: each texture's and each microsurface's cheapest method, each noise's fewest sub-footprints and then each surface's fewest probes (up to --probes) that meet it, measured; others gaussian)")
         ->capture_default_str();
     app->add_option("--size,--resolution", args->size,
                     "Render at WxH instead of the scene's camera resolution (the same camera and vertical field "
@@ -498,10 +507,12 @@ Command setup_render(CLI::App& parent)
     app->add_flag("--no-edge-coverage", args->no_edge_coverage,
                   "naive, gaussian, exact: take the centre ray's surface for the whole pixel, also on silhouettes "
                   "and horizons");
-    app->add_option("--tolerance", args->tolerance,
-                    "Give every surface the smallest table whose lookup error (CIEDE2000, p99.9 against the exact "
-                    "filtered colour) is at most DE over that surface's sigma range (default: the scene's "
-                    "colormap tolerance, else the fixed 256 x 256 table)");
+    app->add_option(
+        "--tolerance", args->tolerance,
+        "Give every surface the smallest table whose lookup error (CIEDE2000, p99.9 against the exact "
+        "filtered colour) is at most DE over that surface's sigma range (default: the scene's "
+        "colormap tolerance, else the fixed 256 x 256 table); with --method segments, also the fewest breakpoints whose "
+        "mean CIEDE2000 stays within DE at LOD 1-8 (default: every breakpoint of the map)");
     app->add_option("--shortcut", args->shortcut,
                     "gaussian: take C0(mean) directly where sigma is so small that the exact filtered colour is "
                     "within this CIEDE2000 of it (default: a tenth of the tolerance for a fitted table, else off; "

@@ -2,7 +2,8 @@
 // render --method auto: each texture surface's method chosen for the
 // tolerance as `apply --tolerance` chooses it (ops/method_choice.h), on its
 // own driver and table: four moments of its driver (with the texture's
-// wrap and channel), its colour pyramid through its map, its table (the
+// wrap and channel), its colour pyramid through its map, a segment pyramid
+// of its map's breakpoints for the tolerance (or the scene's), its table (the
 // fitted one, when fitted) and, for a driver of at most kHistogramMaxValues
 // values, its histogram pyramid are written to temporary files and measured
 // against the box reference.
@@ -14,6 +15,7 @@
 #include "cmfilter/texture/color_pyramid_file.h"
 #include "cmfilter/texture/histogram_pyramid.h"
 #include "cmfilter/texture/moment_pyramid.h"
+#include "cmfilter/texture/segment_pyramid_file.h"
 #include "cmfilter/util/memory_budget.h"
 #include "cmfilter/util/temporary_file.h"
 
@@ -27,6 +29,9 @@ namespace {
 
 // The largest histogram pyramid --method auto bakes to measure exact.
 constexpr double kAutoHistogramBytes = 512.0 * 1024 * 1024;
+// The most channels of the segment pyramid --method auto bakes to measure
+// segments (as bake-moments --tolerance).
+constexpr int kAutoSegmentChannels = 64;
 
 }  // namespace
 
@@ -83,6 +88,29 @@ choose_texture_methods(const Scene& scene, const std::vector<Material>& material
         cp.linear_interop_id = config.interop_id(cp.linear_space);
         if (auto baked = bake_color_pyramid(cp); !baked) return prefixed(surface + ": ", baked.error());
 
+        // The segment pyramid of the material's map: the scene's, or the
+        // fewest breakpoints within the tolerance (up to
+        // kAutoSegmentChannels, else no candidate).
+        std::string segments_path;
+        std::shared_ptr<const TemporaryFile> segments_file;
+        if (texture->segments) {
+            segments_path = texture->segments->path();
+        } else {
+            auto file = TemporaryFile::create("cmfilter-auto-segments", ".exr");
+            if (!file) return file.error();
+            SegmentPyramidBakeOptions sp;
+            static_cast<PyramidBakeOptions&>(sp) = bake;
+            sp.output_path = file->path();
+            sp.maps = {&m.color.map};
+            sp.map_sources = {m.provenance.map_path};
+            sp.tolerance_de = options.tolerance;
+            sp.max_channels = kAutoSegmentChannels;
+            if (bake_segment_pyramid(sp)) {
+                segments_path = file->path();
+                segments_file = std::make_shared<const TemporaryFile>(std::move(*file));
+            }
+        }
+
         auto table = TemporaryFile::create("cmfilter-auto-table", ".exr");
         if (!table) return table.error();
         GaussianColorTableInfo table_info;
@@ -120,18 +148,23 @@ choose_texture_methods(const Scene& scene, const std::vector<Material>& material
         MethodChoiceOptions o = options;
         if (!seen_lods.empty()) o.lods = seen_lods;
         o.color_pyramid_path = colors->path();
+        o.segment_pyramid_path = segments_path;
         // A `moments` file of two moments renders as it is: no mixture.
         if (!m.provenance.moments_baked && info.order != 4 && o.candidates.empty()) {
             o.candidates = {FilterMethod::Naive, FilterMethod::Gaussian, FilterMethod::ColorPyramid};
+            if (!segments_path.empty()) o.candidates.push_back(FilterMethod::Segments);
             if (histograms) o.candidates.push_back(FilterMethod::Exact);
         }
         auto choice = choose_filter_method(inputs, config, o);
         if (!choice) return prefixed(surface + ": ", choice.error());
-        if (!too_large.empty())
-            for (std::string& why : choice->skipped)
-                if (why.rfind("exact:", 0) == 0) why = too_large;
+        for (std::string& why : choice->skipped) {
+            if (!too_large.empty() && why.rfind("exact:", 0) == 0) why = too_large;
+            if (segments_path.empty() && why.rfind("segments:", 0) == 0)
+                why = "segments: the material's map needs more than " + std::to_string(kAutoSegmentChannels) +
+                      " channels at this tolerance";
+        }
         if (!choice->choice()) return no_method_meets(*choice, surface);
-        out.push_back({i, std::move(*choice)});
+        out.push_back({i, std::move(*choice), segments_path, std::move(segments_file)});
     }
     return out;
 }
@@ -186,6 +219,7 @@ RenderMethod render_method_of(FilterMethod method)
     case FilterMethod::Mixture: return RenderMethod::Mixture;
     case FilterMethod::Exact: return RenderMethod::Exact;
     case FilterMethod::ColorPyramid: return RenderMethod::ColorPyramid;
+    case FilterMethod::Segments: return RenderMethod::Segments;
     default: return RenderMethod::Gaussian;
     }
 }

@@ -123,6 +123,27 @@ cmfilter_cli_case(NAME render.auto-color-pyramid EXIT 0
                   STDOUT "cmfilter:texture_methods: \"0: color-pyramid\""
                   COMMAND bash -c "set -o pipefail && ($0 render $1 --method auto --tolerance 0.05 --measure-lods 1,2 -o $2 -q && oiiotool --info -v $2) | tr '\\n' ' '"
                           ${CMF} ${SC}/texture-driver.json ${OUT}/render-auto-cp.exr)
+# segments: the ramp means between the map's breakpoints, baked in process
+# for every breakpoint of the map: on the four-valued driver the same box
+# means as color-pyramid (float rounding apart). A noise is refused. A pyramid
+# baked once and named by driver/segments recolours a map on its breakpoints
+# and refuses a map of others (check_render_segments.sh).
+cmfilter_cli_case(NAME render.texture-segments-equals-color-pyramid EXIT 0
+                  COMMAND bash -c "set -e\n$0 render $1 --method segments -o $2/render-seg.exr -q\n$0 render $1 --method color-pyramid -o $2/render-seg-cp.exr -q\noiiotool --fail 1e-4 --hardfail 1e-4 $2/render-seg.exr $2/render-seg-cp.exr --diff > /dev/null"
+                          ${CMF} ${SCB}/texture-quantised.json ${OUT})
+cmfilter_cli_case(NAME render.bad.segments-noise EXIT 3
+                  STDERR "surface 0: segments needs a texture driver"
+                  ABSENT ${RO} COMMAND ${CMF} render ${SC}/good.json --method segments -o ${RO})
+add_test(NAME cli.render.segments-baked-once
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/check_render_segments.sh ${CMF} ${OIIOTOOL} ${PROJECT_SOURCE_DIR} ${OUT})
+set_tests_properties(cli.render.segments-baked-once PROPERTIES LABELS cli FIXTURES_REQUIRED cli_dirs ENVIRONMENT "OCIO=")
+# --method auto through a two-colour map at a tolerance no moments method
+# meets: segments, one channel (4 bytes a texel, exact), before the colour
+# pyramid's 12.
+cmfilter_cli_case(NAME render.auto-segments EXIT 0
+                  STDOUT "cmfilter:texture_methods: \"0: segments\""
+                  COMMAND bash -c "set -o pipefail && ($0 render $1 --method auto --tolerance 0.05 --measure-lods 1,2 -o $2 -q && oiiotool --info -v $2) | tr '\\n' ' '"
+                          ${CMF} ${SC}/texture-step.json ${OUT}/render-auto-seg.exr)
 cmfilter_cli_case(NAME render.bad.output-extension EXIT 3 STDERR "wrong extension"
                   ABSENT ${OUT}/render-bad.tif COMMAND ${CMF} render ${SC}/good.json -o ${OUT}/render-bad.tif)
 # Tables fitted to a tolerance over the surface's sigma range, and the small-sigma shortcut.

@@ -28,6 +28,24 @@ def test_render_equals_the_command(cli, source_dir, tmp_path, method):
     np.testing.assert_array_equal(image, expected[..., :3])
 
 
+def test_render_segments_equals_the_command_and_the_colour_pyramid(cli, source_dir, tmp_path):
+    # segments through the two-colour map: the command's image pixel for
+    # pixel, and the colour pyramid's box means of C0(f), a second
+    # computation, within float rounding.
+    oiiotool = shutil.which("oiiotool")
+    if not oiiotool:
+        pytest.skip("oiiotool is not installed")
+    scene = source_dir / "tests/cli/scenes/texture-step.json"
+    exr, tif = tmp_path / "render.exr", tmp_path / "render.tif"
+    run(cli, "render", scene, "--method", "segments", "-o", exr, "--quiet")
+    run(oiiotool, exr, "-d", "float", "--compression", "none", "-o", tif)
+    image = cmfilter.render(str(scene), method="segments")
+    np.testing.assert_array_equal(image, tifffile.imread(tif)[..., :3])
+    colors = cmfilter.render(str(scene), method="color-pyramid")
+    assert np.abs(image - colors).max() < 1e-4
+    assert np.abs(image - cmfilter.render(str(scene), method="naive")).max() > 0.05
+
+
 def test_render_aovs_and_region(source_dir):
     scene = str(source_dir / "tests/cli/scenes/good.json")
     whole = cmfilter.render(scene, method="naive", size=(16, 9), aovs=True)

@@ -43,9 +43,10 @@ Expected<std::unique_ptr<SurfaceRenderer>> make_surface_renderer(const Material&
                     material, driver, surface,
                     surface < options.texture_methods.size() ? options.texture_methods[surface] : options.method,
                     options));
-            else if (layered_method(options, surface) == RenderMethod::ColorPyramid)
-                return bad_input("render: surface " + std::to_string(surface) +
-                                 ": color-pyramid needs a texture driver; a microsurface's colours come from its "
+            else if (const RenderMethod layered = layered_method(options, surface);
+                     layered == RenderMethod::ColorPyramid || layered == RenderMethod::Segments)
+                return bad_input("render: surface " + std::to_string(surface) + ": " + to_string(layered) +
+                                 " needs a texture driver; a microsurface's colours come from its "
                                  "heights and slopes (render it by gaussian, gaussian-exact or exact)");
             else if constexpr (std::is_same_v<Driver, MicrosurfaceDriver>)
                 return make_microsurface_renderer(driver, surface, options);

@@ -103,10 +103,12 @@ Expected<std::unique_ptr<DriverRenderer>> make_noise_renderer(const ColorLayer& 
         return bad_input("render: surface " + std::to_string(surface) + ": exact needs a texture driver with at most " +
                          std::to_string(kHistogramMaxValues) +
                          " distinct values; noise drivers have no exact filtering distribution");
-    if (colour_method == RenderMethod::ColorPyramid)
-        return bad_input("render: surface " + std::to_string(surface) +
-                         ": color-pyramid needs a texture driver, whose texels it maps through C0 and box-mips; a "
-                         "noise has no level 0 to bake (render it by gaussian or mixture)");
+    if (colour_method == RenderMethod::ColorPyramid || colour_method == RenderMethod::Segments)
+        return bad_input(
+            "render: surface " + std::to_string(surface) + ": " + to_string(colour_method) +
+            " needs a texture driver, whose texels it " +
+            (colour_method == RenderMethod::Segments ? "ramps between the map's breakpoints" : "maps through C0") +
+            " and box-mips; a noise has no level 0 to bake (render it by gaussian or mixture)");
     return std::unique_ptr<DriverRenderer>(
         std::make_unique<NoiseRenderer>(color, driver.noise, colour_method, squares, max_probes));
 }

@@ -267,6 +267,7 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<Material>& 
 void set_method_materials(RenderMethod method, MaterialOptions& options)
 {
     options.histograms = method == RenderMethod::Exact;
+    options.segments = method == RenderMethod::Segments;
     options.moment_order = method == RenderMethod::Mixture ? 4 : 2;
 }
 

@@ -110,8 +110,9 @@ Expected<RenderedImage> render(const Scene& scene, const std::vector<Material>& 
                                const RenderOptions& options);
 
 // What `method` needs of the materials prepared for it (scene_materials.h):
-// exact the histogram pyramids of texture drivers, mixture four moments in
-// the pyramids baked in process. Sets those fields of `options`.
+// exact the histogram pyramids of texture drivers, segments their segment
+// pyramids, mixture four moments in the pyramids baked in process. Sets
+// those fields of `options`.
 void set_method_materials(RenderMethod method, MaterialOptions& options);
 
 }  // namespace cmfilter

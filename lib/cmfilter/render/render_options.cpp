@@ -14,19 +14,20 @@ const char* to_string(RenderMethod method)
     case RenderMethod::Reference: return "reference";
     case RenderMethod::Mixture: return "mixture";
     case RenderMethod::ColorPyramid: return "color-pyramid";
+    case RenderMethod::Segments: return "segments";
     }
     return "gaussian";
 }
 
 Expected<RenderMethod> parse_render_method(const std::string& text)
 {
-    for (RenderMethod m :
-         {RenderMethod::Naive, RenderMethod::Gaussian, RenderMethod::GaussianExact, RenderMethod::Exact,
-          RenderMethod::Supersample, RenderMethod::Reference, RenderMethod::Mixture, RenderMethod::ColorPyramid})
+    for (RenderMethod m : {RenderMethod::Naive, RenderMethod::Gaussian, RenderMethod::GaussianExact,
+                           RenderMethod::Exact, RenderMethod::Supersample, RenderMethod::Reference,
+                           RenderMethod::Mixture, RenderMethod::ColorPyramid, RenderMethod::Segments})
         if (text == to_string(m)) return m;
     return bad_input(
         "method '" + text +
-        "' is unknown (expected naive, gaussian, gaussian-exact, mixture, color-pyramid, exact, supersample or reference)");
+        "' is unknown (expected naive, gaussian, gaussian-exact, mixture, color-pyramid, segments, exact, supersample or reference)");
 }
 
 Status check_render_samples(int samples)

@@ -22,7 +22,21 @@ namespace cmfilter {
 // (noise/noise_sub_footprints.h); every other driver as Gaussian.
 // ColorPyramid: texture drivers alone, from the box means of C0(f) of their
 // level 0 (texture/color_pyramid.h); refused for any other driver.
-enum class RenderMethod { Naive, Gaussian, GaussianExact, Exact, Supersample, Reference, Mixture, ColorPyramid };
+// Segments: texture drivers alone, from the ramp means of their segment
+// pyramid (texture/segment_pyramid_file.h: the scene's, or one baked in
+// process for the material's map) weighed by the map's colours through its
+// breakpoints; refused for any other driver.
+enum class RenderMethod {
+    Naive,
+    Gaussian,
+    GaussianExact,
+    Exact,
+    Supersample,
+    Reference,
+    Mixture,
+    ColorPyramid,
+    Segments
+};
 const char* to_string(RenderMethod method);
 Expected<RenderMethod> parse_render_method(const std::string& text);
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/render/texture_footprint.h"
 
+#include "cmfilter/colormap/map_breakpoints.h"
 #include "cmfilter/math/moment_mixture.h"
 
 #include "cmfilter/texture/anisotropic_probes.h"
@@ -31,12 +32,29 @@ Rgb histogram_color(const HistogramTexture& histograms, double u, double v, doub
     return albedo;
 }
 
+// c_0 + sum_k c_k R_k over the ramp means at (u, v) and the trilinear lookup
+// LOD lod, wrapped as histogram_color's; a failed lookup reads zero means
+// (C(t_0)).
+Rgb segments_color(const TextureSegments& segments, double u, double v, double lod, std::vector<float>& ramps)
+{
+    const SegmentPyramidTexture& pyramid = *segments.pyramid;
+    ramps.resize(static_cast<std::size_t>(pyramid.channels()));
+    if (pyramid.info().wrap == TextureWrap::Periodic) {
+        u -= std::floor(u);
+        v -= std::floor(v);
+    }
+    const float level = std::isfinite(lod) ? static_cast<float>(std::max(0.0, lod)) : 0.0f;
+    pyramid.lookup(static_cast<float>(u), static_cast<float>(v), level, ramps.data());
+    return ramp_color(segments.ramp_colors, ramps.data());
+}
+
 }  // namespace
 
 TextureFootprint filter_texture_footprint(const ColorLayer& color, const FilteredTexture& texture,
                                           const HistogramTexture* histograms, const SurfaceHit& h, TextureColor colour,
                                           FootprintWidth width, int max_probes, const std::vector<Rgb>& bin_colors,
-                                          std::vector<float>& weights, const ColorPyramid* color_pyramid)
+                                          std::vector<float>& weights, const ColorPyramid* color_pyramid,
+                                          const TextureSegments* segments)
 {
     TextureFootprint out;
     const FootprintProbes probes = footprint_probes(h.du_dx, h.dv_dx, h.du_dy, h.dv_dy, max_probes, width);
@@ -72,6 +90,7 @@ TextureFootprint filter_texture_footprint(const ColorLayer& color, const Filtere
             out.albedo += color_pyramid->lookup(u, v, level);
             break;
         }
+        case TextureColor::Segments: out.albedo += segments_color(*segments, u, v, lookup_lod, weights); break;
         }
     }
     const double n = probes.count;

@@ -20,7 +20,13 @@
 //             (needs the texture's histogram pyramid);
 //   color-pyramid  mean C0(f) over the probe, a trilinear lookup of the
 //             driver's colour pyramid (texture/color_pyramid.h: the box
-//             means of C0(f) of its level 0) at the same LOD.
+//             means of C0(f) of its level 0) at the same LOD;
+//   segments  c_0 + sum_k c_k R_k, R_k the probe's ramp means, a trilinear
+//             lookup of the driver's segment pyramid
+//             (texture/segment_pyramid_file.h) at the same LOD, c_k the
+//             map's ramp colours through its breakpoints (ramp_colors,
+//             colormap/map_breakpoints.h): the box mean of C0 over the probe
+//             for a map linear between them.
 // The pixel's albedo is the mean of its probes' colours: a thin footprint
 // near the horizon keeps what varies across it. For a footprint made of
 // squares aligned with a pyramid level (a probe width of 2^k level-0 texels
@@ -36,12 +42,20 @@
 #include "cmfilter/texture/color_pyramid.h"
 #include "cmfilter/texture/filtered_texture.h"
 #include "cmfilter/texture/histogram_pyramid.h"
+#include "cmfilter/texture/segment_pyramid_texture.h"
 
 #include <vector>
 
 namespace cmfilter {
 
-enum class TextureColor { None, Naive, Gaussian, Mixture, Exact, ColorPyramid };
+enum class TextureColor { None, Naive, Gaussian, Mixture, Exact, ColorPyramid, Segments };
+
+// Segments: the texture's segment pyramid and the colours its ramp means
+// are weighed by for the material's map (ramp_colors: c_0, then the steps).
+struct TextureSegments {
+    const SegmentPyramidTexture* pyramid = nullptr;
+    std::vector<Rgb> ramp_colors;
+};
 
 struct TextureFootprint {
     Rgb albedo;        // mean of the probes' colours (black for TextureColor::None)
@@ -56,10 +70,12 @@ struct TextureFootprint {
 // texture's histogram pyramid (Exact only); `bin_colors`: C0(v_b) for its
 // values (Exact only); `weights`: scratch space for the histogram weights;
 // `color_pyramid`: the texture's colour pyramid through C0 (ColorPyramid
-// only).
+// only); `segments`: its segment pyramid and ramp colours (Segments only;
+// `weights` holds the ramp means).
 TextureFootprint filter_texture_footprint(const ColorLayer& color, const FilteredTexture& texture,
                                           const HistogramTexture* histograms, const SurfaceHit& h, TextureColor colour,
                                           FootprintWidth width, int max_probes, const std::vector<Rgb>& bin_colors,
-                                          std::vector<float>& weights, const ColorPyramid* color_pyramid = nullptr);
+                                          std::vector<float>& weights, const ColorPyramid* color_pyramid = nullptr,
+                                          const TextureSegments* segments = nullptr);
 
 }  // namespace cmfilter

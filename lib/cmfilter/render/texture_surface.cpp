@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cmfilter/render/texture_surface.h"
 
+#include "cmfilter/colormap/map_breakpoints.h"
 #include "cmfilter/render/texture_footprint.h"
 
 #include <optional>
@@ -21,6 +22,7 @@ TextureColor texture_color(RenderMethod method)
     case RenderMethod::Exact: return TextureColor::Exact;
     case RenderMethod::Mixture: return TextureColor::Mixture;
     case RenderMethod::ColorPyramid: return TextureColor::ColorPyramid;
+    case RenderMethod::Segments: return TextureColor::Segments;
     default: return TextureColor::None;
     }
 }
@@ -28,9 +30,10 @@ TextureColor texture_color(RenderMethod method)
 class TextureRenderer : public DriverRenderer {
 public:
     TextureRenderer(const ColorLayer& color, const TextureDriver& driver, RenderMethod method,
-                    std::vector<Rgb> bin_colors, std::optional<ColorPyramid> color_pyramid, int max_probes)
+                    std::vector<Rgb> bin_colors, std::optional<ColorPyramid> color_pyramid, TextureSegments segments,
+                    int max_probes)
         : color_(color), driver_(driver), method_(method), bin_colors_(std::move(bin_colors)),
-          color_pyramid_(std::move(color_pyramid)), max_probes_(max_probes)
+          color_pyramid_(std::move(color_pyramid)), segments_(std::move(segments)), max_probes_(max_probes)
     {
     }
 
@@ -41,7 +44,7 @@ public:
         const TextureFootprint f = filter_texture_footprint(
             color_, driver_.texture, driver_.histograms ? &*driver_.histograms : nullptr, h,
             context.supersampled ? TextureColor::None : texture_color(method_), context.options.footprint, max_probes_,
-            bin_colors_, scratch.weights, color_pyramid_ ? &*color_pyramid_ : nullptr);
+            bin_colors_, scratch.weights, color_pyramid_ ? &*color_pyramid_ : nullptr, &segments_);
         scratch.counts.footprints += f.counts.footprints;
         scratch.counts.plain += f.counts.plain;
         return {f.albedo, f.mean, f.sigma, f.lod};
@@ -55,6 +58,7 @@ private:
     RenderMethod method_;
     std::vector<Rgb> bin_colors_;                // exact: C0 at the histogram's distinct values
     std::optional<ColorPyramid> color_pyramid_;  // color-pyramid: C0(f) box-mipped
+    TextureSegments segments_;                   // segments: the driver's pyramid and the map's ramp colours
     int max_probes_;
 };
 
@@ -105,9 +109,22 @@ Expected<std::unique_ptr<DriverRenderer>> make_texture_renderer(const Material& 
         po.threads = options.threads;
         color_pyramid = ColorPyramid::build(po);
     }
-    return std::unique_ptr<DriverRenderer>(
-        std::make_unique<TextureRenderer>(material.color, driver, colour_method, std::move(bin_colors),
-                                          std::move(color_pyramid), max_probes_of(options, surface)));
+    // segments: the ramp means of the driver's segment pyramid (prepared
+    // with the material, scene_materials.h), weighed by the map's colours
+    // through its breakpoints, as apply --method segments weighs them.
+    TextureSegments segments;
+    if (colour_method == RenderMethod::Segments) {
+        if (!driver.segments)
+            return bad_input("render: surface " + std::to_string(surface) +
+                             ": segments needs the texture's segment pyramid (MaterialOptions::segments, or the "
+                             "scene's driver/segments)");
+        const SegmentPyramidInfo& info = driver.segments->info();
+        segments.pyramid = &*driver.segments;
+        segments.ramp_colors = ramp_colors(material.color.map, info.breakpoints, info.weights());
+    }
+    return std::unique_ptr<DriverRenderer>(std::make_unique<TextureRenderer>(
+        material.color, driver, colour_method, std::move(bin_colors), std::move(color_pyramid), std::move(segments),
+        max_probes_of(options, surface)));
 }
 
 }  // namespace cmfilter

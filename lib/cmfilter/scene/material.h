@@ -7,7 +7,8 @@
 //                       (filtered_noise.h);
 //   TextureDriver       a moment pyramid and its level-0 driver
 //                       (filtered_texture.h), with its histogram pyramid
-//                       for `render --method exact`;
+//                       for `render --method exact` and its segment
+//                       pyramid for `render --method segments`;
 //   MicrosurfaceDriver  a Gaussian microsurface whose heights and slopes
 //                       colour it (sec. 5);
 //   DisplacementDriver  a textured displacement in its place (scene.h).
@@ -24,6 +25,7 @@
 #include "cmfilter/tables/color_layer.h"
 #include "cmfilter/texture/filtered_texture.h"
 #include "cmfilter/texture/histogram_pyramid.h"
+#include "cmfilter/texture/segment_pyramid_texture.h"
 #include "cmfilter/util/temporary_file.h"
 
 #include <memory>
@@ -44,6 +46,10 @@ struct TextureDriver {
     // With MaterialOptions::histograms: the histogram pyramid of the level-0
     // driver (its file: MaterialProvenance::histograms_file).
     std::optional<HistogramTexture> histograms;
+    // The segment pyramid of the level-0 driver (render --method segments):
+    // the scene's driver/segments, or baked here with
+    // MaterialOptions::segments (its file: MaterialProvenance::segments_file).
+    std::optional<SegmentPyramidTexture> segments;
 };
 
 // Heights and wavelengths in texture units (scene.h); height_scale scene
@@ -80,6 +86,8 @@ struct MaterialProvenance {
     bool moments_baked = false;      // the texture's moment pyramid was baked here
     // The histogram pyramid's temporary file (TextureDriver::histograms).
     std::shared_ptr<const TemporaryFile> histograms_file;
+    // The segment pyramid's temporary file when baked here (TextureDriver::segments).
+    std::shared_ptr<const TemporaryFile> segments_file;
 };
 
 struct Material {

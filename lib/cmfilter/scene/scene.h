@@ -79,6 +79,10 @@ struct DriverSource {
     std::string sigma_table_path;
     std::string moments_path;
     std::string image_path;
+    // Moments or image: a segment pyramid of the same driver
+    // (bake-moments --segments) that render --method segments reads; empty:
+    // baked when rendering.
+    std::string segments_path;
 };
 
 // A material colours its surface by a driver (colormap = C0 of the driver's

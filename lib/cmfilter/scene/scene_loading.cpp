@@ -237,7 +237,7 @@ Expected<std::string> read_noise_spec(const JsonValue& value)
 
 Expected<DriverSource> read_driver(const JsonValue& value, const fs::path& scene_folder)
 {
-    auto object = JsonObject::read(value, {"noise", "sigma_table", "moments", "image"});
+    auto object = JsonObject::read(value, {"noise", "sigma_table", "moments", "image", "segments"});
     if (!object) return object.error();
     const auto read_path = [&](const JsonValue& v) { return read_file_path(v, scene_folder); };
     DriverSource driver;
@@ -245,7 +245,9 @@ Expected<DriverSource> read_driver(const JsonValue& value, const fs::path& scene
     if (!status) return status.error();
     if (object->has("noise")) {
         driver.kind = DriverKind::Noise;
-        status = object->read_required("noise", driver.noise_spec, read_noise_spec);
+        status = object->reject_any_of({"segments"}, "applies only to a texture driver (moments or image), not to "
+                                                     "a noise");
+        if (status) status = object->read_required("noise", driver.noise_spec, read_noise_spec);
         if (status) status = object->read_optional("sigma_table", driver.sigma_table_path, read_path);
     } else {
         const bool moments = object->has("moments");
@@ -254,6 +256,7 @@ Expected<DriverSource> read_driver(const JsonValue& value, const fs::path& scene
                                                             (moments ? "moments" : "an image"));
         if (status && moments) status = object->read_required("moments", driver.moments_path, read_path);
         if (status && !moments) status = object->read_required("image", driver.image_path, read_path);
+        if (status) status = object->read_optional("segments", driver.segments_path, read_path);
     }
     if (!status) return status.error();
     return driver;

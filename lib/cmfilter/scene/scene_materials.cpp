@@ -12,6 +12,7 @@
 #include "cmfilter/tables/table_color_map.h"
 #include "cmfilter/scene/tolerance_tables.h"
 #include "cmfilter/texture/histogram_pyramid.h"
+#include "cmfilter/texture/segment_pyramid_file.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -174,7 +175,7 @@ Expected<TextureDriver> load_moments_driver(const LayerSource& layer, const Colo
                                     "' (cmfilter:source): no such file";
         auto texture = FilteredTexture::create(std::move(*moments), std::nullopt);
         if (!texture) return located(texture.error(), prefix);
-        return TextureDriver{std::move(*texture), std::nullopt};
+        return TextureDriver{std::move(*texture), std::nullopt, std::nullopt};
     }
     auto source = read_moment_source(info.source, path, info, options.threads);
     if (!source) return located(source.error(), prefix);
@@ -183,7 +184,7 @@ Expected<TextureDriver> load_moments_driver(const LayerSource& layer, const Colo
     provenance.driver_path = info.source;  // before the moments (and info with them) move
     auto texture = FilteredTexture::create(std::move(*moments), std::move(source->image.values));
     if (!texture) return located(texture.error(), prefix);
-    return TextureDriver{std::move(*texture), std::nullopt};
+    return TextureDriver{std::move(*texture), std::nullopt, std::nullopt};
 }
 
 // A driver image: read once, its moment pyramid baked in process into a
@@ -218,7 +219,7 @@ Expected<TextureDriver> load_image_driver(const LayerSource& layer, const ColorM
     if (!texture) return located(texture.error(), prefix);
     provenance.driver_path = path;
     provenance.moments_baked = true;
-    return TextureDriver{std::move(*texture), std::nullopt};
+    return TextureDriver{std::move(*texture), std::nullopt, std::nullopt};
 }
 
 // The histogram pyramid of a texture driver (render --method exact): baked
@@ -252,6 +253,49 @@ Status load_histograms(const Scene& scene, std::size_t i, const MaterialOptions&
     provenance.histograms_file = std::make_shared<const TemporaryFile>(std::move(*file));
     texture.histograms.emplace(std::move(*histograms));
     return ok();
+}
+
+// Where surface i's segment pyramid is named or baked for: driver/segments,
+// else its driver's key.
+std::string segments_where(const Scene& scene, std::size_t i)
+{
+    const DriverSource& driver = scene.surfaces[i].material.driver;
+    return where(scene, i,
+                 !driver.segments_path.empty()        ? "driver/segments"
+                 : driver.kind == DriverKind::Moments ? "driver/moments"
+                                                      : "driver/image");
+}
+
+// The segment pyramid of surface i's texture driver, baked from its level-0
+// driver (with its wrap and channel) for the breakpoints of its map into a
+// temporary file the material keeps.
+Status bake_segments(const Scene& scene, std::size_t i, const MaterialOptions& options, Material& m)
+{
+    const std::string prefix = segments_where(scene, i);
+    if (!m.provenance.missing_driver.empty())
+        return io_error(m.provenance.missing_driver +
+                        "; segments bakes its ramp means from the driver's texels: re-bake the moments from the "
+                        "driver where it is now, name the driver itself with driver/image, or name a segment "
+                        "pyramid with driver/segments");
+    const MomentPyramidInfo& moments = std::get<TextureDriver>(m.driver).texture.moments().info();
+    SegmentPyramidBakeOptions bake;
+    bake.driver_path = m.provenance.driver_path;
+    if (scene.surfaces[i].material.driver.kind == DriverKind::Moments) bake.channel = moments.channel;
+    bake.wrap = moments.wrap;
+    bake.threads = options.threads;
+    bake.maps = {&m.color.map};
+    bake.map_sources = {m.provenance.map_path};
+    bake.tolerance_de = options.segments_tolerance;
+    if (options.note)
+        options.note("baking the segment pyramid of " + m.provenance.driver_path + " (surface " + std::to_string(i) +
+                     "; --method segments; bake it once with bake-moments --segments and name it with "
+                     "driver/segments to skip this)");
+    auto file = TemporaryFile::create("cmfilter-segments", ".exr");
+    if (!file) return located(file.error(), prefix);
+    bake.output_path = file->path();
+    if (auto baked = bake_segment_pyramid(bake); !baked) return located(baked.error(), prefix);
+    const std::string path = file->path();
+    return open_segments(scene, i, m, path, std::make_shared<const TemporaryFile>(std::move(*file)));
 }
 
 // A noise or texture driver over the layer's colour map.
@@ -445,6 +489,11 @@ Expected<std::vector<Material>> prepare_materials(const Scene& scene, const Colo
         Material& m = materials.emplace_back(std::move(*material));
         if (auto* texture = std::get_if<TextureDriver>(&m.driver); texture && options.histograms)
             if (auto st = load_histograms(scene, i, options, *texture, m.provenance); !st) return st.error();
+        if (has_texture_driver(m) && !source.driver.segments_path.empty()) {
+            if (auto st = open_segments(scene, i, m, source.driver.segments_path, nullptr); !st) return st.error();
+        } else if (has_texture_driver(m) && options.segments) {
+            if (auto st = bake_segments(scene, i, options, m); !st) return st.error();
+        }
         if (source.has_microsurface() && !source.has_colormap()) continue;  // no table of its own
         TableChoiceOptions tables = options.tables;
         tables.threads = options.threads;
@@ -476,6 +525,43 @@ Status prepare_surface_histograms(const Scene& scene, std::vector<Material>& mat
     if (auto st = refuse_noise_for_exact(scene, i); !st) return st;
     if (!texture) return ok();  // a noise driver on a surface the scene says is a texture's: nothing to bake from
     return load_histograms(scene, i, options, *texture, materials[i].provenance);
+}
+
+Status open_segments(const Scene& scene, std::size_t i, Material& m, const std::string& path,
+                     std::shared_ptr<const TemporaryFile> file)
+{
+    const std::string prefix = segments_where(scene, i);
+    auto* texture = std::get_if<TextureDriver>(&m.driver);
+    if (!texture || is_microsurface(m))
+        return bad_input(prefix + "a segment pyramid colours a texture driver, and surface " + std::to_string(i) +
+                         " has none");
+    auto pyramid = SegmentPyramidTexture::open(path);
+    if (!pyramid) return located(pyramid.error(), prefix);
+    const SegmentPyramidInfo& info = pyramid->info();
+    const MomentPyramidInfo& moments = texture->texture.moments().info();
+    // The same driver texels, read alike: its hash, channel, size and wrap.
+    std::string differs;
+    if (info.source_sha256 != moments.source_sha256)
+        differs = "was baked from '" + info.source + "' (SHA-256 " + info.source_sha256.substr(0, 12) +
+                  "), and the texture's driver is '" + moments.source + "' (SHA-256 " +
+                  moments.source_sha256.substr(0, 12) + ")";
+    else if (info.channel_index != moments.channel_index)
+        differs = "holds driver channel " + info.channel + ", and the texture's is " + moments.channel;
+    else if (info.width != moments.width || info.height != moments.height)
+        differs = "is " + std::to_string(info.width) + " x " + std::to_string(info.height) + ", and the texture " +
+                  std::to_string(moments.width) + " x " + std::to_string(moments.height);
+    else if (info.wrap != moments.wrap)
+        differs = std::string("was baked with wrap ") + to_string(info.wrap) + ", and the texture's wrap is " +
+                  to_string(moments.wrap) + " (scene textures repeat: bake-moments --wrap periodic)";
+    if (!differs.empty())
+        return bad_input(prefix + "segment pyramid '" + path + "' " + differs + " (expected the texture's own driver)");
+    const std::string map_name = m.provenance.map_path.empty() ? std::string("the material's map")
+                                                               : "the material's map '" + m.provenance.map_path + "'";
+    if (auto fit = check_segment_pyramid_map(info, path, m.color.map, map_name); !fit)
+        return located(fit.error(), prefix);
+    texture->segments.emplace(std::move(*pyramid));
+    m.provenance.segments_file = std::move(file);
+    return ok();
 }
 
 Status prepare_histograms(const Scene& scene, std::vector<Material>& materials, const MaterialOptions& options)

@@ -28,6 +28,12 @@
 // its own; a noise driver is refused (it has no exact filtering
 // distribution), and so is a driver with more than kHistogramMaxValues
 // distinct values (the histogram bake's own error).
+// For `render --method segments` (MaterialOptions::segments) a texture
+// driver gets its segment pyramid (segment_pyramid_file.h) for its map's
+// breakpoints, baked in process from the same level-0 driver with the same
+// wrap into a temporary file of its own, unless the scene names one
+// (driver/segments), which is opened and checked against the driver and the
+// map instead.
 #pragma once
 
 #include "cmfilter/color/color_config.h"
@@ -37,6 +43,7 @@
 #include "cmfilter/util/error.h"
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -50,6 +57,13 @@ struct MaterialOptions {
     // Bake each texture driver's histogram pyramid (render --method exact);
     // BadInput for a noise driver or a driver with too many distinct values.
     bool histograms = false;
+    // Bake each texture driver's segment pyramid (render --method segments)
+    // for the breakpoints of its map, unless the scene names one
+    // (driver/segments, opened whatever this says): every breakpoint of the
+    // map over the driver's range (segments_tolerance 0), or the fewest that
+    // keep it within segments_tolerance (SegmentPyramidBakeOptions::tolerance_de).
+    bool segments = false;
+    double segments_tolerance = 0;
     // Moments per texel of the pyramids baked in process from driver
     // images: 2, or 4 for render --method mixture (MomentBakeOptions::order).
     int moment_order = 2;
@@ -81,6 +95,16 @@ Status prepare_histograms(const Scene& scene, std::vector<Material>& materials, 
 // The same for surface `surface` alone.
 Status prepare_surface_histograms(const Scene& scene, std::vector<Material>& materials, std::size_t surface,
                                   const MaterialOptions& options);
+
+// Opens the segment pyramid at `path` as surface `surface`'s
+// (TextureDriver::segments), as prepare_materials opens the scene's
+// driver/segments: BadInput, naming the key and both files, when it was
+// baked from another driver (SHA-256, channel, size or wrap) or the
+// material's map does not fit its breakpoints (check_segment_pyramid_map),
+// or the surface has no texture driver. `file`: the temporary file it lies
+// in, kept with the material (null for a file of the user's).
+Status open_segments(const Scene& scene, std::size_t surface, Material& material, const std::string& path,
+                     std::shared_ptr<const TemporaryFile> file);
 
 // Re-bakes, with MaterialOptions::moment_order moments, the pyramid of every
 // surface's texture driver baked in process from a driver image with

@@ -12,10 +12,14 @@
 // with four values is the box mean of C0 over the texels and near the
 // reference, and refuses a render without histograms and a driver with too
 // many values; on a footprint made of aligned squares, the probes give the
-// box mean of f, the squares' sigmas, and (exact) the box mean of C0.
+// box mean of f, the squares' sigmas, and (exact, color-pyramid, segments)
+// the box mean of C0; a segment pyramid baked for one map colours a map of
+// other colours on its breakpoints exactly, and refuses other breakpoints
+// and another driver.
 #include "cmfilter/scene/camera.h"
 #include "cmfilter/color/color_config.h"
 #include "cmfilter/texture/moment_pyramid.h"
+#include "cmfilter/texture/segment_pyramid_file.h"
 #include "cmfilter/render/render.h"
 #include "cmfilter/scene/scene_materials.h"
 #include "cmfilter/scene/surface_hit.h"
@@ -799,4 +803,109 @@ TEST_CASE("color-pyramid is the box mean of C0 over a footprint of aligned squar
                 strip_worst = std::max(strip_worst, std::abs(along->rgb[3 * p + ch] - want[ch]));
         }
     CHECK(strip_worst < 1e-4);
+}
+
+TEST_CASE("segments is the box mean of C0 over aligned squares, and one pyramid baked for a map recolours another on "
+          "its breakpoints")
+{
+    // The aligned straight-down scene of the colour-pyramid case, through
+    // 8-texel maps: A, baked in process; B, other colours on the same
+    // knots, reading a pyramid baked for A (driver/segments); C, 5 texels
+    // (other knots), refused by that pyramid.
+    auto config = ColorConfig::load("");
+    REQUIRE(config);
+    const int n = 512;
+    std::vector<float> f(static_cast<std::size_t>(n) * n);
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+            const unsigned k = static_cast<unsigned>(x / 16) * 73856093u ^ static_cast<unsigned>(y / 16) * 19349663u;
+            f[static_cast<std::size_t>(y) * n + x] = static_cast<float>((k >> 4) % 4096) / 4096.0f;
+        }
+    const auto write_map = [](const std::string& name, const std::vector<unsigned char>& rgb) {
+        const std::string path = scratch(name);
+        cmfilter_test::write_image(path, static_cast<int>(rgb.size() / 3), 1, 3, OIIO::TypeDesc::UINT8, rgb.data());
+        return path;
+    };
+    const std::string map_a = write_map("segments-a.png", {10,  200, 30,  250, 240, 10,  0,   0,   0,   200, 20,  20,
+                                                           255, 255, 255, 30,  60,  220, 120, 120, 120, 250, 130, 0});
+    const std::string map_b = write_map("segments-b.png", {250, 10,  10,  0,   90, 40,  220, 220, 30, 5,   5,   5,
+                                                           40,  200, 240, 255, 0,  255, 90,  40,  0,  200, 200, 200});
+    const std::string map_c =
+        write_map("segments-c.png", {10, 200, 30, 250, 240, 10, 0, 0, 0, 200, 20, 20, 255, 255, 255});
+    const double d = 1 / std::tan(kTwoPi / 24);
+    Scene scene = texture_scene(write_driver("segments.exr", n, n, f), {0, d, 0}, {0, 0, 0}, {0, 0, 1}, 1, 32, 32);
+    scene.surfaces[0].material.colormap.domain_min = 0;
+    scene.surfaces[0].material.colormap.domain_max = 1;
+    scene.surfaces[0].material.colormap.image_path = map_a;
+    auto camera = Camera::create(scene.camera);
+    REQUIRE(camera);
+    // The largest channel difference from the box mean of C0 over each
+    // pixel's 32 x 32 texels.
+    const auto worst_of = [&](const RenderedImage& image, const ColorMap& map) {
+        double worst = 0;
+        for (int y = 0; y < 32; ++y)
+            for (int x = 0; x < 32; ++x) {
+                const Rgb want = aligned_box_mean(scene, *camera, map, f, n, x, y);
+                const std::size_t p = static_cast<std::size_t>(y) * 32 + static_cast<std::size_t>(x);
+                for (int ch = 0; ch < 3; ++ch) worst = std::max(worst, std::abs(image.rgb[3 * p + ch] - want[ch]));
+            }
+        return worst;
+    };
+    RenderOptions options;
+    options.method = RenderMethod::Segments;
+    MaterialOptions baked_here;
+    set_method_materials(options.method, baked_here);
+    CHECK(baked_here.segments);
+    auto a = prepare_materials(scene, *config, baked_here);
+    REQUIRE(a);
+    const TextureDriver* driver = texture_driver((*a)[0]);
+    REQUIRE(driver);
+    REQUIRE(driver->segments);
+    CHECK(driver->segments->channels() <= 8);
+    auto image_a = render(scene, *a, options);
+    REQUIRE(image_a);
+    CHECK(image_a->method == RenderMethod::Segments);
+    const double worst_a = worst_of(*image_a, (*a)[0].color.map);
+    MESSAGE("segments (map A, baked in process) vs the box mean of C0: largest difference " << worst_a);
+    CHECK(worst_a < 1e-4);
+
+    // One pyramid for A, periodic as scene textures are, read for B.
+    SegmentPyramidBakeOptions bake;
+    bake.driver_path = scene.surfaces[0].material.driver.image_path;
+    bake.wrap = TextureWrap::Periodic;
+    bake.maps = {&(*a)[0].color.map};
+    bake.map_sources = {map_a};
+    bake.output_path = scratch("segments-a-pyramid.exr");
+    REQUIRE(bake_segment_pyramid(bake));
+    scene.surfaces[0].material.colormap.image_path = map_b;
+    scene.surfaces[0].material.driver.segments_path = bake.output_path;
+    auto b = prepare_materials(scene, *config, MaterialOptions{});
+    REQUIRE(b);
+    REQUIRE(texture_driver((*b)[0])->segments);
+    CHECK(texture_driver((*b)[0])->segments->path() == bake.output_path);
+    auto image_b = render(scene, *b, options);
+    REQUIRE(image_b);
+    const double worst_b = worst_of(*image_b, (*b)[0].color.map);
+    options.method = RenderMethod::Gaussian;
+    auto gaussian_b = render(scene, *b, options);
+    REQUIRE(gaussian_b);
+    const double worst_gaussian = worst_of(*gaussian_b, (*b)[0].color.map);
+    MESSAGE("segments (map B through A's pyramid): largest difference " << worst_b << " (gaussian " << worst_gaussian
+                                                                        << ")");
+    CHECK(worst_b < 1e-4);
+    CHECK(worst_gaussian > 1e-2);
+
+    // Other knots, and a pyramid of another driver, are refused by name.
+    scene.surfaces[0].material.colormap.image_path = map_c;
+    auto c = prepare_materials(scene, *config, MaterialOptions{});
+    REQUIRE_FALSE(c);
+    CHECK(c.error().message.find("/surfaces/0/material/driver/segments") != std::string::npos);
+    CHECK(c.error().message.find(bake.output_path) != std::string::npos);
+    scene.surfaces[0].material.colormap.image_path = map_b;
+    std::vector<float> g = f;
+    g[0] = 0.5f;
+    scene.surfaces[0].material.driver.image_path = write_driver("segments-other.exr", n, n, g);
+    auto other = prepare_materials(scene, *config, MaterialOptions{});
+    REQUIRE_FALSE(other);
+    CHECK(other.error().message.find("(expected the texture's own driver)") != std::string::npos);
 }

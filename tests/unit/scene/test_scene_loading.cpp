@@ -667,6 +667,20 @@ TEST_CASE("a sigma table without a noise driver is an error")
           "/surfaces/1/material/driver/sigma_table: applies only to a noise driver, not to moments");
 }
 
+TEST_CASE("a segment pyramid beside a noise driver is an error, and beside moments must exist")
+{
+    SceneFolder folder;
+    json text = example_scene();
+    text["surfaces"][0]["material"]["driver"]["segments"] = "segments.exr";
+    CHECK(folder.after_scene_path(folder.error_of(text)) ==
+          "/surfaces/0/material/driver/segments: applies only to a texture driver (moments or image), not to a noise");
+    text = example_scene();
+    text["surfaces"][1]["material"]["driver"]["segments"] = "no-such-segments.exr";
+    const std::string message = folder.after_scene_path(folder.error_of(text));
+    CHECK(message.rfind("/surfaces/1/material/driver/segments: file not found: ", 0) == 0);
+    CHECK(contains(message, "no-such-segments.exr"));
+}
+
 TEST_CASE("a driver with two sources is an error")
 {
     SceneFolder folder;
