@@ -7,8 +7,10 @@
 # gaussian 8, mixture 16 (docs/data/photo-accuracy.csv), the colour pyramid
 # 12 (docs/data/color-pyramid-accuracy.csv), the segment pyramid 4 K, with
 # every exact breakpoint and with --tolerance 0.5
-# (docs/data/segments-accuracy.csv). Draws docs/images/segments-bytes.png
-# (needs gnuplot); exact errors (0 up to rounding) are drawn at 1e-5.
+# (docs/data/segments-accuracy.csv), and exact, the histogram pyramid, 4 a
+# distinct value of the driver (docs/data/photo-exact-accuracy.csv:
+# photo_accuracy.sh with METHODS exact). Draws docs/images/segments-bytes.png
+# (needs gnuplot); errors below 1e-5 (0 up to rounding) are drawn at 1e-5.
 #
 #   bash tests/bench/segments_bytes_chart.sh [WORK_DIR]
 set -euo pipefail
@@ -24,6 +26,11 @@ def add(method, case, mean, nbytes):
 for r in csv.DictReader(open(f"{data}/photo-accuracy.csv")):
     if int(r["lod"]) < 1: continue
     add(r["method"], (r["driver"], r["map"]), float(r["mean"]), {"naive": 4, "gaussian": 8, "mixture": 16}[r["method"]])
+import numpy, skimage.data
+distinct = {d: len(numpy.unique(getattr(skimage.data, d)())) for d in ("camera", "moon", "coins", "gravel")}
+for r in csv.DictReader(open(f"{data}/photo-exact-accuracy.csv")):
+    if int(r["lod"]) >= 1 and r["method"] == "exact":
+        add("exact", (r["driver"], r["map"]), float(r["mean"]), 4 * distinct[r["driver"]])
 for r in csv.DictReader(open(f"{data}/color-pyramid-accuracy.csv")):
     if r["set"] == "photographs" and r["method"] == "color-pyramid":
         add("color-pyramid", (r["driver"], r["map"]), float(r["mean"]), 12)
@@ -46,14 +53,14 @@ for m in $(cat "$work/methods.txt"); do
   i=$((i + 1))
 done
 gnuplot <<GNUPLOT
-set terminal pngcairo size 1000,650 font "sans,11"
+set terminal pngcairo size 1100,650 font "sans,11"
 set output "$root/docs/images/segments-bytes.png"
-set title "The 96 photograph cases (4 photographs x stripes, step, narrow-band x LOD 1-8): per driver and map, the worst over the LODs"
+set title "96 photograph cases (4 photographs x stripes, step, narrow-band x LOD 1-8): per driver and map, the worst LOD"
 set xlabel "bytes per level-0 texel (float32)"
 set ylabel "worst mean CIEDE2000 against the box reference (log; exact drawn at 1e-5)"
 set logscale xy
 set format y "%g"
-set xrange [2:80]
+set xrange [2:2000]
 set yrange [5e-6:50]
 set grid
 set key outside right top

@@ -15,10 +15,17 @@
 
 namespace cmfilter {
 
-// texel(x, y) returns the Value of texel (x, y), 0 <= x < w, 0 <= y < h;
-// Value needs Value + Value, Value - Value and double * Value.
-template <typename Value, typename Texel>
-Value bilinear_texels(double s, double t, int w, int h, TextureWrap wrap, const Value& outside, const Texel& texel)
+// The four texels bilinear interpolation at (s, t) reads and its weights:
+// columns x[0], x[1] and rows y[0], y[1] (after the wrap; -1 for a black
+// neighbour), and the fractions a along s and b along t. The interpolant is
+// lerp(lerp(T(x0, y0), T(x1, y0), a), lerp(T(x0, y1), T(x1, y1), a), b), the
+// second texel of a pair read only where its fraction is > 0.
+struct BilinearTaps {
+    int x[2] = {0, 0}, y[2] = {0, 0};
+    double a = 0, b = 0;
+};
+
+inline BilinearTaps bilinear_taps(double s, double t, int w, int h, TextureWrap wrap)
 {
     // Far coordinates come near the texture first, where texel indices fit an
     // int: by whole repeats (periodic), else to [-1, 2], beyond which every
@@ -30,17 +37,31 @@ Value bilinear_texels(double s, double t, int w, int h, TextureWrap wrap, const 
     const double u = near(s) * w - 0.5, v = near(t) * h - 0.5;
     const double fx = std::floor(u), fy = std::floor(v);
     const int x0 = static_cast<int>(fx), y0 = static_cast<int>(fy);
-    const double a = u - fx, b = v - fy;
-    const auto at = [&](int x, int y) -> Value {
-        const int i = wrap_texel(x, w, wrap), j = wrap_texel(y, h, wrap);
-        return i < 0 || j < 0 ? outside : texel(i, j);
+    BilinearTaps taps;
+    taps.a = u - fx;
+    taps.b = v - fy;
+    for (int i = 0; i < 2; ++i) {
+        taps.x[i] = wrap_texel(x0 + i, w, wrap);
+        taps.y[i] = wrap_texel(y0 + i, h, wrap);
+    }
+    return taps;
+}
+
+// texel(x, y) returns the Value of texel (x, y), 0 <= x < w, 0 <= y < h;
+// Value needs Value + Value, Value - Value and double * Value.
+template <typename Value, typename Texel>
+Value bilinear_texels(double s, double t, int w, int h, TextureWrap wrap, const Value& outside, const Texel& texel)
+{
+    const BilinearTaps taps = bilinear_taps(s, t, w, h, wrap);
+    const auto at = [&](int i, int j) -> Value {
+        return taps.x[i] < 0 || taps.y[j] < 0 ? outside : texel(taps.x[i], taps.y[j]);
     };
-    const auto row = [&](int y) -> Value {
-        const Value left = at(x0, y);
-        return a > 0 ? left + a * (at(x0 + 1, y) - left) : left;
+    const auto row = [&](int j) -> Value {
+        const Value left = at(0, j);
+        return taps.a > 0 ? left + taps.a * (at(1, j) - left) : left;
     };
-    const Value top = row(y0);
-    return b > 0 ? top + b * (row(y0 + 1) - top) : top;
+    const Value top = row(0);
+    return taps.b > 0 ? top + taps.b * (row(1) - top) : top;
 }
 
 }  // namespace cmfilter

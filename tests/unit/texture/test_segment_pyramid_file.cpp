@@ -168,6 +168,65 @@ TEST_CASE("segment pyramid: every level recoloured is the box mean of the new ma
     }
 }
 
+TEST_CASE("segment pyramid: lookups read into memory equal TextureSystem's, for every wrap and any lod")
+{
+    // A second algorithm: OpenImageIO's TextureSystem filtering the same
+    // file, at 2000 random points (beyond the texture too) and lods
+    // (fractional, negative, past the last level), half of them on texel
+    // centres of a level.
+    const std::vector<float> f = driver_values();
+    const std::string driver = write_driver(f, "reads.exr");
+    const ColorMap map = color_map(reference_colors(1.0));
+    for (TextureWrap wrap : {TextureWrap::Clamp, TextureWrap::Periodic, TextureWrap::Black}) {
+        SegmentPyramidBakeOptions o;
+        o.driver_path = driver;
+        o.output_path = kDir + "/reads-" + to_string(wrap) + ".exr";
+        o.maps = {&map};
+        o.wrap = wrap;
+        if (auto r = bake_segment_pyramid(o); !r) FAIL(r.error().message);
+        auto memory = SegmentPyramidTexture::open(o.output_path, PyramidReads::Memory);
+        auto tiles = SegmentPyramidTexture::open(o.output_path, PyramidReads::TextureSystem);
+        REQUIRE(memory);
+        REQUIRE(tiles);
+        CHECK(memory->reads() == PyramidReads::Memory);
+        CHECK(tiles->reads() == PyramidReads::TextureSystem);
+        CHECK(SegmentPyramidTexture::open(o.output_path)->reads() == PyramidReads::Memory);  // Auto: 2 KB
+        const int n = memory->channels();
+        std::vector<float> a(n), b(n);
+        std::uint32_t state = 12345;
+        const auto uniform = [&] {
+            state = state * 1664525u + 1013904223u;
+            return (state >> 8) / 16777216.0f;
+        };
+        const char* wrap_name = to_string(wrap);
+        double worst = 0, low = 1, high = 0;
+        for (int i = 0; i < 2000; ++i) {
+            float s = -0.7f + 2.4f * uniform(), t = -0.7f + 2.4f * uniform();
+            float lod = -0.5f + 4.5f * uniform();
+            if (i % 2 == 0) {  // a texel centre of an integer level
+                const int k = static_cast<int>(uniform() * 3.0f);
+                const int w = std::max(1, kW >> k), h = std::max(1, kH >> k);
+                s = (std::floor(uniform() * w) + 0.5f) / w;
+                t = (std::floor(uniform() * h) + 0.5f) / h;
+                lod = static_cast<float>(k);
+            }
+            CAPTURE(wrap_name);
+            CAPTURE(s);
+            CAPTURE(t);
+            CAPTURE(lod);
+            REQUIRE(memory->lookup(s, t, lod, a.data()));
+            REQUIRE(tiles->lookup(s, t, lod, b.data()));
+            for (int c = 0; c < n; ++c) worst = std::max(worst, double(std::abs(a[c] - b[c])));
+            low = std::min(low, double(a[n - 1]));
+            high = std::max(high, double(a[n - 1]));
+        }
+        MESSAGE(std::string(wrap_name) << ": largest difference from TextureSystem " << worst << " over ramp means "
+                                       << low << " .. " << high);
+        CHECK(worst <= 2e-6);
+        CHECK(high - low > 0.1);  // the lookups vary: the comparison can fail
+    }
+}
+
 TEST_CASE("segment pyramid: a two-colour map takes one channel whatever its colours")
 {
     const std::vector<float> f = driver_values();
