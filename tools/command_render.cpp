@@ -114,6 +114,58 @@ nlohmann::json table_json(const ColorLayer& m)
     return j;
 }
 
+// The segment pyramids the render read: each surface's rendered with
+// segments (--method segments, or auto's choice), the scene's driver/segments
+// or baked for the render.
+struct SegmentPyramidUse {
+    std::size_t surface = 0;
+    const SegmentPyramidTexture* pyramid = nullptr;
+    bool baked = false;
+};
+
+std::vector<SegmentPyramidUse> segment_pyramids_used(const std::vector<Material>& materials, RenderMethod method,
+                                                     const std::vector<SurfaceMethodChoice>& choices)
+{
+    std::vector<SegmentPyramidUse> out;
+    for (std::size_t i = 0; i < materials.size(); ++i) {
+        const auto* texture = std::get_if<TextureDriver>(&materials[i].driver);
+        if (!texture || !texture->segments) continue;
+        bool used = method == RenderMethod::Segments;
+        for (const SurfaceMethodChoice& c : choices)
+            if (c.surface == i) used = c.choice.choice()->method == FilterMethod::Segments;
+        if (used) out.push_back({i, &*texture->segments, materials[i].provenance.segments_file != nullptr});
+    }
+    return out;
+}
+
+// "surface 0: segment pyramid 'S.exr', 14 breakpoints, 13 channels (52 bytes
+// a texel), the map's colours at them, read into memory"
+std::string describe_segment_pyramid(const SegmentPyramidUse& u)
+{
+    const SegmentPyramidInfo& info = u.pyramid->info();
+    std::ostringstream s;
+    s << "surface " << u.surface << ": segment pyramid "
+      << (u.baked ? std::string("baked for this render") : "'" + u.pyramid->path() + "'") << ", "
+      << info.breakpoints.size() << " breakpoints, " << info.channels() << " channel"
+      << (info.channels() == 1 ? "" : "s") << " (" << info.bytes_per_texel() << " bytes a texel), "
+      << (info.weights() ? "least-squares colours" : "the map's colours at them") << ", read "
+      << (u.pyramid->reads() == PyramidReads::Memory ? "into memory" : "through TextureSystem");
+    return s.str();
+}
+
+nlohmann::json segment_pyramid_json(const SegmentPyramidUse& u)
+{
+    const SegmentPyramidInfo& info = u.pyramid->info();
+    nlohmann::json j = {{"surface", u.surface},
+                        {"breakpoints", info.breakpoints.size()},
+                        {"channels", info.channels()},
+                        {"bytes_per_texel", info.bytes_per_texel()},
+                        {"colors", info.weights() ? "least-squares" : "interpolant"},
+                        {"reads", u.pyramid->reads() == PyramidReads::Memory ? "memory" : "texture-system"}};
+    if (!u.baked) j["path"] = u.pyramid->path();
+    return j;
+}
+
 // The fields render's errors name, as its flags.
 FieldFlags render_flags()
 {
@@ -383,6 +435,7 @@ Status run(const RenderArgs& args)
 
     std::size_t hits = 0;
     for (unsigned char h : image->hit) hits += h;
+    const std::vector<SegmentPyramidUse> segments_used = segment_pyramids_used(*materials, *method, choices);
     if (args.json) {
         nlohmann::json j;
         j["output"] = args.output;
@@ -419,6 +472,10 @@ Status run(const RenderArgs& args)
         j["seconds"] = image->seconds;
         j["tables"] = nlohmann::json::array();
         for (const Material& m : *materials) j["tables"].push_back(table_json(table_layer(m)));
+        if (!segments_used.empty()) {
+            j["segment_pyramids"] = nlohmann::json::array();
+            for (const SegmentPyramidUse& u : segments_used) j["segment_pyramids"].push_back(segment_pyramid_json(u));
+        }
         if (image->method == RenderMethod::Gaussian || image->method == RenderMethod::Mixture)
             j["footprints"] = {{"filtered", image->footprints}, {"plain", image->plain_footprints}};
         if (!args.aov.empty()) {
@@ -439,6 +496,7 @@ Status run(const RenderArgs& args)
             std::cout << "  " << image->plain_footprints << " of " << image->footprints
                       << " footprints took C0(mean) directly\n";
         }
+        for (const SegmentPyramidUse& u : segments_used) std::cout << "  " << describe_segment_pyramid(u) << "\n";
         for (const SurfaceMethodChoice& c : choices) {
             std::cout << "  surface " << c.surface << ": " << to_string(c.choice.choice()->method) << "\n";
             print_method_choice(std::cout, c.choice);

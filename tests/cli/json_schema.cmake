@@ -51,6 +51,8 @@ cmfilter_json_case(render-auto-noise "" ${CMF} render ${SCB}/noise-auto.json --m
                    --measure-lods 0 -o ${JOUT}/render-auto-noise.exr)
 cmfilter_json_case(render-auto-microsurface microsurface_scene ${CMF} render ${MICRO_SCENE} --method auto
                    --tolerance 1 -o ${JOUT}/render-auto-microsurface.exr)
+cmfilter_json_case(render-segments "" ${CMF} render ${SC}/texture-step.json --method segments
+                   -o ${JOUT}/render-segments.exr)
 cmfilter_json_case(render-mixture-noise "" ${CMF} render ${SC}/good.json --method mixture --sub-footprints 2
                    -o ${JOUT}/render-mixture-noise.exr)
 cmfilter_json_case(render-reference "" ${CMF} render ${SC}/good.json --method reference -o ${JOUT}/render-ref.exr)

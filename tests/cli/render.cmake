@@ -131,6 +131,9 @@ cmfilter_cli_case(NAME render.auto-color-pyramid EXIT 0
 cmfilter_cli_case(NAME render.texture-segments-equals-color-pyramid EXIT 0
                   COMMAND bash -c "set -e\n$0 render $1 --method segments -o $2/render-seg.exr -q\n$0 render $1 --method color-pyramid -o $2/render-seg-cp.exr -q\noiiotool --fail 1e-4 --hardfail 1e-4 $2/render-seg.exr $2/render-seg-cp.exr --diff > /dev/null"
                           ${CMF} ${SCB}/texture-quantised.json ${OUT})
+cmfilter_cli_case(NAME render.segments-reports-its-pyramid EXIT 0
+                  STDOUT "surface 0: segment pyramid baked for this render, 2 breakpoints, 1 channel \\(4 bytes a texel\\), the map's colours at them, read into memory"
+                  COMMAND ${CMF} render ${SC}/texture-step.json --method segments -o ${OUT}/render-seg-report.exr)
 cmfilter_cli_case(NAME render.bad.segments-noise EXIT 3
                   STDERR "surface 0: segments needs a texture driver"
                   ABSENT ${RO} COMMAND ${CMF} render ${SC}/good.json --method segments -o ${RO})
