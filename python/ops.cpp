@@ -217,13 +217,16 @@ void bind_ops(py::module_& m)
         out["breakpoints"] = c.breakpoints;
         out["colors"] = colors;
         out["fit_de"] = c.fit_de;
+        out["mean_fit_de"] = c.mean_fit_de;
         return out;
         },
         py::arg("pyramid"), py::arg("table"), py::kw_only(), py::arg("ocio_config") = "",
         "The colours C_0 .. C_K at the breakpoints of a segment pyramid for the map of `table`, what "
         "shaders/cmfilter_segments.glsl weighs the ramp means by and apply(method='segments') uses: the map's own "
         "colours there, or for a tolerance bake its least-squares colours over the driver: a dict of `breakpoints`, "
-        "`colors` ((K + 1, 3) scene-linear) and `fit_de`. A map that does not fit the breakpoints is refused.");
+        "`colors` ((K + 1, 3) scene-linear), `fit_de` and, for a tolerance bake, `mean_fit_de` (the map's mean "
+        "error through them over the driver; a warning when above the baked maps'). A map that does not fit the "
+        "breakpoints is refused.");
 
     m.def(
         "choose_method",

@@ -144,7 +144,10 @@ Status run(ApplyArgs args)
         j["failed_lookups"] = r.failed_lookups;
         j["texels_outside_domain"] = r.texels_outside_domain;
         j["fraction_outside_domain"] = r.fraction_outside_domain;
-        if (r.method == FilterMethod::Segments) j["segment_fit_de"] = r.segment_fit_de;
+        if (r.method == FilterMethod::Segments) {
+            j["segment_fit_de"] = r.segment_fit_de;
+            j["segment_mean_fit_de"] = r.segment_mean_fit_de;
+        }
         j["warnings"] = r.warnings;
         if (choice) j["choice"] = method_choice_json(*choice);
         j["time_ms"] = total_ms;
@@ -158,9 +161,13 @@ Status run(ApplyArgs args)
                   << " x " << r.moments.height << ", levels 0.." << r.top_level << " reachable)\n"
                   << "  table      " << r.table_path << "\n";
         if (!r.map_path.empty()) std::cout << "  map        " << r.map_path << "\n";
-        if (r.method == FilterMethod::Segments)
+        if (r.method == FilterMethod::Segments) {
             std::cout << "  fit        the map through the pyramid's breakpoints: CIEDE2000 " << r.segment_fit_de
-                      << " at most\n";
+                      << " at most";
+            if (r.segment_mean_fit_de > 0)
+                std::cout << ", " << r.segment_mean_fit_de << " mean over the driver's values";
+            std::cout << "\n";
+        }
         if (!r.driver_path.empty()) std::cout << "  driver     " << r.driver_path << "\n";
         if (!r.histograms_path.empty()) std::cout << "  histograms " << r.histograms_path << "\n";
         if (r.method == FilterMethod::Gaussian || r.method == FilterMethod::Mixture)

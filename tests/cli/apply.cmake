@@ -237,6 +237,14 @@ cmfilter_apply_case(NAME bad.segments-max-channels EXIT 3
                     STDERR "the maps need more than 1 channels .* --max-channels allows 1; the closest within 1 channels reaches a mean CIEDE2000 of [0-9.e-]+"
                     ABSENT ${OUT}/sp-none.exr
                     COMMAND ${CMF} bake-moments ${FIX}/apply-driver.exr --segments ${AT} --max-channels 1 -o ${OUT}/sp-none.exr)
+# A map recoloured after a tolerance bake that fits the kept breakpoints
+# everywhere as well as the baked map (so it is taken) but worse on average
+# over the driver (sand-snow with its channels G, R, B): a warning names
+# both means and how to re-bake; the baked map itself gets none.
+cmfilter_apply_case(NAME segments.recoloured-after-tolerance-warns EXIT 0
+                    STDERR "warning: the map of table '.*sand-snow-grb\\.exr' \\('.*sand-snow-grb\\.png'\\) fits the breakpoints of segment pyramid '.*apply-sand-snow-segments\\.exr' worse on average than the maps it was baked for: mean CIEDE2000 [0-9.]+ over the driver's values, against their [0-9.]+ \\(--tolerance 0\\.5 kept their filtered error within [0-9.]+ at LOD 1-8\\). expect more here, or re-bake with bake-moments --segments naming this map's table"
+                    COMMAND bash -c "set -e\noiiotool $1 --ch G,R,B --chnames R,G,B -o $3/sand-snow-grb.png\n$0 bake-colormap $1 -o $3/sand-snow.exr -q\n$0 bake-colormap $3/sand-snow-grb.png -o $3/sand-snow-grb.exr -q\n$0 bake-moments $2 --segments $3/sand-snow.exr --tolerance 0.5 -o $3/apply-sand-snow-segments.exr -q\nif $0 apply --moments $3/apply-sand-snow-segments.exr --table $3/sand-snow.exr --lod 1 --method segments -o $3/sand-snow-own.exr 2>&1 | grep warning\nthen exit 1\nfi\n$0 apply --moments $3/apply-sand-snow-segments.exr --table $3/sand-snow-grb.exr --lod 1 --method segments -o $3/sand-snow-grb-out.exr -q"
+                            ${CMF} ${LUTS}/sand-snow.png ${FIX}/apply-driver.exr ${OUT})
 # A two-colour map: one channel holds its share whatever the colours, so
 # --tolerance takes segments (4 bytes a texel, exact) over the colour pyramid
 # (12) and the inexact naive (4) and gaussian (8); the file says so.

@@ -303,6 +303,12 @@ BreakpointFit breakpoint_fit(const ColorMap& map, const std::vector<double>& bre
             fit.worst_f = f;
         }
     }
+    if (weights)
+        for (std::size_t i = 0; i < weights->values.size(); ++i) {
+            const double f = weights->values[i];
+            fit.mean_de += weights->shares[i] *
+                           ciede2000_linear_rgb(map.evaluate(f), breakpoint_curve(breakpoints, colors, f));
+        }
     return fit;
 }
 

@@ -42,6 +42,10 @@ Rgb breakpoint_interpolant(const ColorMap& map, const std::vector<double>& break
 struct BreakpointFit {
     double max_de = 0;   // largest CIEDE2000 between C0 and the interpolant on [lo, hi]
     double worst_f = 0;  // where
+    // With weights: the mean CIEDE2000 over the driver's binned values, each
+    // weighed by its share (what a tolerance bake keeps within its
+    // tolerance); else 0.
+    double mean_de = 0;
 };
 
 // C0 against its curve through `breakpoints` (breakpoint_colors.h: the

@@ -227,10 +227,12 @@ Expected<FilteredImage> apply_segments(const ApplyOptions& options, const ColorC
     if (!table) return table.error();
     auto map = table_map(options, *table, config, out);
     if (!map) return map.error();
-    auto fit = check_segment_pyramid_map(info, options.moments_path, map->map.map,
-                                         "the map of table '" + options.table_path + "' ('" + out.map_path + "')");
+    const std::string map_name = "the map of table '" + options.table_path + "' ('" + out.map_path + "')";
+    auto fit = check_segment_pyramid_map(info, options.moments_path, map->map.map, map_name);
     if (!fit) return fit.error();
     out.segment_fit_de = fit->max_de;
+    out.segment_mean_fit_de = fit->mean_de;
+    if (auto w = segment_recolour_warning(info, options.moments_path, *fit, map_name)) out.warnings.push_back(*w);
     const std::vector<Rgb> colors = ramp_colors(map->map.map, info.breakpoints, info.weights());
     record_driver(out.moments, info);
     set_output_lod(out, options, pyramid->reachable_levels() - 1, info.width, info.height);

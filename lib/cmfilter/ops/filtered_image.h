@@ -74,6 +74,10 @@ struct FilteredImage {
     // segments: the largest CIEDE2000 of the table's map against its
     // interpolant through the pyramid's breakpoints (0 when it fits exactly).
     double segment_fit_de = 0;
+    // segments from a tolerance bake (least-squares colours): its mean
+    // CIEDE2000 over the driver's recorded values (BreakpointFit::mean_de);
+    // else 0.
+    double segment_mean_fit_de = 0;
 
     // gaussian: table lookups outside its range (LookupCounters).
     LookupCounters table_counters;

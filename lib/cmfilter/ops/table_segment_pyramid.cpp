@@ -54,14 +54,16 @@ Expected<SegmentColors> segment_pyramid_colors(const std::string& pyramid_path, 
     const SegmentPyramidInfo& info = pyramid->info();
     auto map = table_color_map(table_path, config);
     if (!map) return map.error();
-    auto fit = check_segment_pyramid_map(info, pyramid_path, map->map.map,
-                                         "the map of table '" + table_path + "' ('" + map->map.provenance.path + "')");
+    const std::string map_name = "the map of table '" + table_path + "' ('" + map->map.provenance.path + "')";
+    auto fit = check_segment_pyramid_map(info, pyramid_path, map->map.map, map_name);
     if (!fit) return fit.error();
     SegmentColors out;
     out.breakpoints = info.breakpoints;
     out.colors = breakpoint_colors(map->map.map, info.breakpoints, info.weights());
     out.fit_de = fit->max_de;
+    out.mean_fit_de = fit->mean_de;
     out.warnings = map->warnings;
+    if (auto w = segment_recolour_warning(info, pyramid_path, *fit, map_name)) out.warnings.push_back(*w);
     return out;
 }
 

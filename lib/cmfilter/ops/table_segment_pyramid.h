@@ -42,6 +42,7 @@ struct SegmentColors {
     std::vector<double> breakpoints;
     std::vector<Rgb> colors;  // one per breakpoint
     double fit_de = 0;        // the map through them: the largest CIEDE2000
+    double mean_fit_de = 0;   // a tolerance bake's: their mean over the driver's values (else 0)
     std::vector<std::string> warnings;
 };
 Expected<SegmentColors> segment_pyramid_colors(const std::string& pyramid_path, const std::string& table_path,

@@ -403,4 +403,15 @@ Expected<BreakpointFit> check_segment_pyramid_map(const SegmentPyramidInfo& info
         ", as the maps it was baked for)" + lacks + "; re-bake with bake-moments --segments naming this map's table");
 }
 
+std::optional<std::string> segment_recolour_warning(const SegmentPyramidInfo& info, const std::string& pyramid_path,
+                                                    const BreakpointFit& fit, const std::string& map_name)
+{
+    if (!info.weights() || fit.mean_de <= info.mean_fit_de + 1e-3) return std::nullopt;
+    return map_name + " fits the breakpoints of segment pyramid '" + pyramid_path +
+           "' worse on average than the maps it was baked for: mean CIEDE2000 " + short_number(fit.mean_de) +
+           " over the driver's values, against their " + short_number(info.mean_fit_de) + " (--tolerance " +
+           short_number(info.tolerance_de) + " kept their filtered error within " + short_number(info.filtered_fit_de) +
+           " at LOD 1-8); expect more here, or re-bake with bake-moments --segments naming this map's table";
+}
+
 }  // namespace cmfilter

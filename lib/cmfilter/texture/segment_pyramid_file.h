@@ -119,4 +119,13 @@ Expected<SegmentPyramidBakeResult> bake_segment_pyramid(const SegmentPyramidBake
 Expected<BreakpointFit> check_segment_pyramid_map(const SegmentPyramidInfo& info, const std::string& pyramid_path,
                                                   const ColorMap& map, const std::string& map_name);
 
+// For a pyramid of least-squares colours (a tolerance bake), a map that
+// check_segment_pyramid_map took but that fits the breakpoints worse on
+// average over the driver's recorded values (fit.mean_de) than the maps it
+// was baked for (info.mean_fit_de, plus 1e-3): a warning naming `map_name`,
+// both means and what the tolerance kept, since the filtered error can then
+// exceed it; else nothing.
+std::optional<std::string> segment_recolour_warning(const SegmentPyramidInfo& info, const std::string& pyramid_path,
+                                                    const BreakpointFit& fit, const std::string& map_name);
+
 }  // namespace cmfilter

@@ -14,6 +14,7 @@
 
 #include "box_reference.h"
 #include "reference_convolution.h"
+#include "scoped_env.h"
 #include "test_images.h"
 
 #include "cmfilter/color/ciede2000.h"
@@ -225,6 +226,46 @@ TEST_CASE("segment pyramid: lookups read into memory equal TextureSystem's, for 
         CHECK(worst <= 2e-6);
         CHECK(high - low > 0.1);  // the lookups vary: the comparison can fail
     }
+}
+
+TEST_CASE("segment pyramid: read into memory only where its levels fit a quarter of the memory budget")
+{
+    // A 256 x 256 driver: 9 levels, (4^9 - 1) / 3 = 87381 texels of 4
+    // channels, 1398096 bytes as float; a tile of 64 x 64 fits every budget
+    // below.
+    constexpr int n = 256;
+    std::vector<float> f(n * n);
+    for (int i = 0; i < n * n; ++i) f[i] = static_cast<float>(0.5 + 0.6 * std::sin(1.3 * i + 0.2 * (i % 5)));
+    const std::string driver = kDir + "/budget.exr";
+    write_image(driver, n, n, 1, OIIO::TypeDesc::FLOAT, f.data());
+    const ColorMap map = color_map(reference_colors(1.0));
+    SegmentPyramidBakeOptions o;
+    o.driver_path = driver;
+    o.output_path = kDir + "/budget-segments.exr";
+    o.maps = {&map};
+    if (auto r = bake_segment_pyramid(o); !r) FAIL(r.error().message);
+    const auto open = [&](const char* limit, PyramidReads reads) {
+        ScopedEnv env("CMFILTER_MEMORY_LIMIT", limit);
+        return SegmentPyramidTexture::open(o.output_path, reads);
+    };
+    auto five = open("5M", PyramidReads::Auto);  // a quarter: 1310720 bytes, too few
+    REQUIRE(five);
+    REQUIRE(five->channels() == 4);
+    CHECK(five->reads() == PyramidReads::TextureSystem);
+    auto six = open("6M", PyramidReads::Auto);  // a quarter: 1572864 bytes
+    REQUIRE(six);
+    CHECK(six->reads() == PyramidReads::Memory);
+    std::vector<float> a(4), b(4);
+    REQUIRE(five->lookup(0.3f, 0.6f, 2.5f, a.data()));
+    REQUIRE(six->lookup(0.3f, 0.6f, 2.5f, b.data()));
+    for (int c = 0; c < 4; ++c) CHECK(a[c] == doctest::Approx(b[c]).epsilon(1e-5));
+    auto forced = open("5M", PyramidReads::Memory);  // asked for: the whole budget
+    REQUIRE(forced);
+    CHECK(forced->reads() == PyramidReads::Memory);
+    auto refused = open("1M", PyramidReads::Memory);
+    REQUIRE_FALSE(refused);
+    CHECK(refused.error().message.find("segment pyramid '" + o.output_path + "' read into memory (9 levels of 4 " +
+                                       "channels as float) needs 1.4 MB") != std::string::npos);
 }
 
 TEST_CASE("segment pyramid: a two-colour map takes one channel whatever its colours")

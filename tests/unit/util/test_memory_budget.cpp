@@ -5,6 +5,8 @@
 // named in the refusal.
 #include "cmfilter/util/memory_budget.h"
 
+#include "scoped_env.h"
+
 #include <doctest/doctest.h>
 
 #include <sys/resource.h>
@@ -16,27 +18,9 @@
 #include <string>
 
 using namespace cmfilter;
+using cmfilter_test::ScopedEnv;
 
 namespace {
-
-// Sets an environment variable for one scope, restoring it after.
-class ScopedEnv {
-public:
-    ScopedEnv(const char* name, const char* value) : name_(name)
-    {
-        if (const char* old = std::getenv(name)) old_ = old;
-        setenv(name, value, 1);
-    }
-    ~ScopedEnv()
-    {
-        if (old_) setenv(name_, old_->c_str(), 1);
-        else unsetenv(name_);
-    }
-
-private:
-    const char* name_;
-    std::optional<std::string> old_;
-};
 
 std::uint64_t meminfo_bytes(const std::string& key)
 {
