@@ -7,6 +7,7 @@
 #include "cmfilter/texture/texture_lod.h"
 #include "cmfilter/util/memory_budget.h"
 
+#include <OpenImageIO/imageio.h>
 #include <OpenImageIO/texture.h>
 
 #include <algorithm>
@@ -34,8 +35,15 @@ struct SegmentPyramidTexture::MemoryLevels {
         std::call_once(once[k], [&] {
             Level& L = levels[k];
             auto in = open_image_input(path);
+            if (!in) return;
+            // The level as the file has it must be the level as its metadata
+            // sizes it (a file changed since open, or not the one checked).
+            const OIIO::ImageSpec spec = (*in)->spec(0, k);
+            const int n = static_cast<int>(zeros.size());
+            if (spec.width != L.w || spec.height != L.h || spec.nchannels < n) return;
             L.texels.resize(static_cast<std::size_t>(L.w) * L.h * zeros.size());
-            L.read = in && read_float_pixels(**in, 0, k, 0, static_cast<int>(zeros.size()), L.texels.data());
+            L.read = read_float_pixels(**in, 0, k, 0, n, L.texels.data());
+            if (!L.read) L.texels.clear();
         });
         return levels[k];
     }
