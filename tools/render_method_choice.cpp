@@ -105,9 +105,13 @@ choose_texture_methods(const Scene& scene, const std::vector<Material>& material
             sp.map_sources = {m.provenance.map_path};
             sp.tolerance_de = options.tolerance;
             sp.max_channels = kAutoSegmentChannels;
-            if (bake_segment_pyramid(sp)) {
+            // BadInput: more channels than kAutoSegmentChannels (no
+            // candidate); anything else (writing the file) is an error.
+            if (auto baked = bake_segment_pyramid(sp)) {
                 segments_path = file->path();
                 segments_file = std::make_shared<const TemporaryFile>(std::move(*file));
+            } else if (baked.error().kind != ErrorKind::BadInput) {
+                return prefixed(surface + ": ", baked.error());
             }
         }
 
